@@ -1,0 +1,109 @@
+// rast — the scene model: only what rasterization needs.
+//
+// Screen space (shared/DESIGN.md): x right, y up, the viewport covers [0, W] x [0, H]; pixel (i, j)
+// covers [i, i+1] x [j, j+1]. z is depth: smaller is nearer. A triangle's id is its index in
+// Scene::triangles. Header-only, so that the installed fast library carries no other dependency.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rast {
+
+struct Vertex {
+    double x = 0, y = 0, z = 0;
+    friend bool operator==(const Vertex&, const Vertex&) = default;
+};
+
+struct Triangle {
+    std::array<Vertex, 3> v;
+    friend bool operator==(const Triangle&, const Triangle&) = default;
+};
+
+struct Viewport {
+    int width = 0;
+    int height = 0;
+    friend bool operator==(const Viewport&, const Viewport&) = default;
+};
+
+// A sample position inside the unit pixel square, y up: pixel (i, j) samples at (i + x, j + y).
+struct SamplePoint {
+    double x, y;
+};
+
+namespace detail {
+// The Vulkan standard sample locations, given there with y down, mirrored here into y up (y -> 1 - y).
+// Every coordinate is a multiple of 1/16, so i + x and j + y are exact doubles for any pixel index.
+inline constexpr SamplePoint kSamples1[] = {{0.5, 0.5}};
+inline constexpr SamplePoint kSamples4[] = {
+    {0.375, 1 - 0.125}, {0.875, 1 - 0.375}, {0.125, 1 - 0.625}, {0.625, 1 - 0.875}};
+inline constexpr SamplePoint kSamples8[] = {
+    {0.5625, 1 - 0.3125}, {0.4375, 1 - 0.6875}, {0.8125, 1 - 0.5625}, {0.3125, 1 - 0.1875},
+    {0.1875, 1 - 0.8125}, {0.0625, 1 - 0.4375}, {0.6875, 1 - 0.9375}, {0.9375, 1 - 0.0625}};
+inline constexpr SamplePoint kSamples16[] = {
+    {0.5625, 1 - 0.5625}, {0.4375, 1 - 0.3125}, {0.3125, 1 - 0.625},  {0.75, 1 - 0.4375},
+    {0.1875, 1 - 0.375},  {0.625, 1 - 0.8125},  {0.8125, 1 - 0.6875}, {0.6875, 1 - 0.1875},
+    {0.375, 1 - 0.875},   {0.5, 1 - 0.0625},    {0.25, 1 - 0.125},    {0.125, 1 - 0.75},
+    {0.0, 1 - 0.5},       {0.9375, 1 - 0.25},   {0.875, 1 - 0.9375},  {0.0625, 1 - 0.0}};
+}  // namespace detail
+
+constexpr bool is_supported_sample_count(int n) { return n == 1 || n == 4 || n == 8 || n == 16; }
+
+// The sample positions for 1, 4, 8 or 16 samples per pixel; throws std::invalid_argument otherwise.
+inline std::span<const SamplePoint> sample_pattern(int count) {
+    switch (count) {
+        case 1: return detail::kSamples1;
+        case 4: return detail::kSamples4;
+        case 8: return detail::kSamples8;
+        case 16: return detail::kSamples16;
+        default:
+            throw std::invalid_argument("unsupported sample count " + std::to_string(count) +
+                                        " (expected 1, 4, 8 or 16)");
+    }
+}
+
+struct Scene {
+    Viewport viewport;
+    int samples = 1;
+    std::vector<Triangle> triangles;
+};
+
+// The z-buffer's content after rendering: per sample, the id of the owning triangle (-1 for none) and
+// its depth (+infinity for none). Rows are stored bottom row first (j = 0), matching y up; writers of
+// images and id files flip to top row first.
+struct Framebuffer {
+    static constexpr std::int32_t kNoTriangle = -1;
+
+    Viewport viewport;
+    int samples = 1;
+    std::vector<std::int32_t> ids;
+    std::vector<double> depth;
+
+    Framebuffer() = default;
+    Framebuffer(Viewport vp, int samples_per_pixel)
+        : viewport(vp),
+          samples(samples_per_pixel),
+          ids(size(vp, samples_per_pixel), kNoTriangle),
+          depth(size(vp, samples_per_pixel), std::numeric_limits<double>::infinity()) {}
+
+    std::size_t index(int i, int j, int s = 0) const {
+        return (static_cast<std::size_t>(j) * static_cast<std::size_t>(viewport.width) +
+                static_cast<std::size_t>(i)) * static_cast<std::size_t>(samples) +
+               static_cast<std::size_t>(s);
+    }
+    std::int32_t id(int i, int j, int s = 0) const { return ids[index(i, j, s)]; }
+
+private:
+    static std::size_t size(Viewport vp, int n) {
+        return static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height) *
+               static_cast<std::size_t>(n);
+    }
+};
+
+}  // namespace rast
