@@ -1,0 +1,37 @@
+// Input checks shared by the reference's entry points: bad input is an exception naming what is wrong,
+// never undefined behaviour inside the exact arithmetic (a NaN has no rational value).
+#pragma once
+
+#include <rast/scene.h>
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+namespace rast::reference::detail {
+
+inline void require_valid(Viewport vp) {
+    if (vp.width <= 0 || vp.height <= 0) {
+        std::ostringstream msg;
+        msg << "viewport " << vp.width << "x" << vp.height << " must have a positive width and height";
+        throw std::invalid_argument(msg.str());
+    }
+}
+
+// `id` names the triangle in the message when the caller knows it.
+inline void require_finite(const Triangle& t, std::optional<std::size_t> id = std::nullopt) {
+    for (std::size_t k = 0; k < t.v.size(); ++k) {
+        const Vertex& v = t.v[k];
+        if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) continue;
+        std::ostringstream msg;
+        msg << "triangle ";
+        if (id) msg << *id << " ";
+        msg << "vertex " << k << " (" << v.x << ", " << v.y << ", " << v.z
+            << ") has a coordinate that is not finite";
+        throw std::invalid_argument(msg.str());
+    }
+}
+
+}  // namespace rast::reference::detail
