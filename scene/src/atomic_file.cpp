@@ -1,0 +1,107 @@
+#include "rast/atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <string>
+#include <system_error>
+
+namespace rast {
+
+namespace {
+
+[[noreturn]] void fail(int error, const std::string& what) {
+    throw std::system_error(error, std::generic_category(), "write_file_atomic: " + what);
+}
+
+// Closes the descriptor and removes the temporary unless the rename has taken it over.
+class Temporary {
+public:
+    Temporary(std::string path, int fd) : path_(std::move(path)), fd_(fd) {}
+    Temporary(const Temporary&) = delete;
+    Temporary& operator=(const Temporary&) = delete;
+    ~Temporary() {
+        if (fd_ >= 0) ::close(fd_);
+        if (!path_.empty()) ::unlink(path_.c_str());
+    }
+
+    const std::string& path() const { return path_; }
+    int fd() const { return fd_; }
+
+    // close() can report a deferred write error (NFS, quotas), so its result matters.
+    int close() {
+        const int result = ::close(fd_);
+        fd_ = -1;
+        return result;
+    }
+    void committed() { path_.clear(); }
+
+private:
+    std::string path_;
+    int fd_;
+};
+
+std::filesystem::path directory_of(const std::filesystem::path& target) {
+    return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+// A name unique among this process's calls (counter) and other processes (pid); a leftover from a
+// crashed process with the same pid is skipped by O_EXCL and the next counter value.
+Temporary create_temporary(const std::filesystem::path& target) {
+    static std::atomic<unsigned long> counter{0};
+    const std::filesystem::path dir = directory_of(target);
+    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+    std::string stem = ".";
+    stem += target.filename().string();
+    stem += '.';
+    stem += std::to_string(::getpid());
+    stem += '.';
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        std::string name = stem;
+        name += std::to_string(counter++);
+        name += ".tmp";
+        const std::string path = (dir / name).string();
+        const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) return Temporary(path, fd);
+        if (errno != EEXIST) fail(errno, "cannot create a temporary file in '" + dir.string() + "' for '" +
+                                             target.string() + "'");
+    }
+    fail(EEXIST, "no free temporary file name in '" + dir.string() + "'");
+}
+
+}  // namespace
+
+void write_file_atomic(const std::filesystem::path& target, std::string_view bytes) {
+    if (target.filename().empty()) fail(EISDIR, "'" + target.string() + "' does not name a file");
+    Temporary temp = create_temporary(target);
+    const char* data = bytes.data();
+    std::size_t left = bytes.size();
+    while (left > 0) {
+        const ssize_t written = ::write(temp.fd(), data, left);
+        if (written < 0) {
+            if (errno == EINTR) continue;
+            fail(errno, "cannot write '" + temp.path() + "'");
+        }
+        data += written;
+        left -= static_cast<std::size_t>(written);
+    }
+    if (::fsync(temp.fd()) != 0) fail(errno, "cannot fsync '" + temp.path() + "'");
+    if (temp.close() != 0) fail(errno, "cannot close '" + temp.path() + "'");
+    if (::rename(temp.path().c_str(), target.c_str()) != 0)
+        fail(errno, "cannot rename '" + temp.path() + "' to '" + target.string() + "'");
+    temp.committed();
+
+    // The rename is durable only once the directory entry is.
+    const std::filesystem::path dir = directory_of(target);
+    const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    const int error = dir_fd < 0 ? errno : (::fsync(dir_fd) != 0 ? errno : 0);
+    if (dir_fd >= 0) ::close(dir_fd);
+    if (error != 0)
+        fail(error, "'" + target.string() + "' was replaced, but fsync of its directory '" + dir.string() +
+                        "' failed, so the change might not survive a crash");
+}
+
+}  // namespace rast

@@ -1,0 +1,23 @@
+// rast — reading numbers from text tokens, shared by the .tri reader and the mesh text checker.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rast::detail {
+
+// The whitespace-separated tokens of a line (space, tab, CR, VT, FF).
+std::vector<std::string> split_tokens(std::string_view line);
+
+// The whole token read exactly as strtod reads it in the C locale (decimal or hex-float), whatever the
+// process locale. Throws ParseError(file, line, ...) for anything but a finite number: no digits,
+// trailing characters, NaN, infinity, or a value that overflows to infinity (1e999).
+double parse_finite_double(const std::string& token, const std::string& file, std::int64_t line);
+
+// The whole token as a decimal integer with an optional '-'; throws ParseError if it is not one or if
+// it does not fit in a long long.
+long long parse_integer(const std::string& token, const std::string& file, std::int64_t line);
+
+}  // namespace rast::detail

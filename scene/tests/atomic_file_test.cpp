@@ -1,0 +1,135 @@
+#include "rast/atomic_file.h"
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+
+namespace rast {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A fresh directory per test, removed afterwards.
+class AtomicFile : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("rast-atomic-" + std::to_string(::getpid()) + "-" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        fs::permissions(dir_, fs::perms::owner_all, fs::perm_options::add);
+        fs::remove_all(dir_);
+    }
+    std::size_t entries() const {
+        return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+    }
+    fs::path dir_;
+};
+
+TEST_F(AtomicFile, WritesAndReplacesLeavingNoTemporary) {
+    const fs::path target = dir_ / "out.txt";
+    write_file_atomic(target, "first");
+    EXPECT_EQ(slurp(target), "first");
+    write_file_atomic(target, std::string("sec\0nd", 6));
+    EXPECT_EQ(slurp(target), std::string("sec\0nd", 6));
+    write_file_atomic(target, "");
+    EXPECT_EQ(slurp(target), "");
+    EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFile, NewFileHasOrdinaryPermissions) {
+    const mode_t mask = ::umask(022);
+    ::umask(mask);
+    const fs::path target = dir_ / "perm.txt";
+    write_file_atomic(target, "x");
+    struct stat st {};
+    ASSERT_EQ(::stat(target.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask);
+}
+
+TEST_F(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {
+    const fs::path target = dir_ / "absent" / "out.txt";
+    EXPECT_THROW(write_file_atomic(target, "x"), std::system_error);
+    EXPECT_FALSE(fs::exists(dir_ / "absent"));
+    EXPECT_EQ(entries(), 0u);
+}
+
+TEST_F(AtomicFile, TargetThatIsADirectoryIsUntouchedAndTemporaryRemoved) {
+    const fs::path target = dir_ / "sub";
+    fs::create_directories(target);
+    std::ofstream(target / "keep") << "kept";
+    try {
+        write_file_atomic(target, "x");
+        FAIL() << "no error";
+    } catch (const std::system_error& e) {
+        EXPECT_NE(std::string(e.what()).find("cannot rename"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(fs::is_directory(target));
+    EXPECT_EQ(slurp(target / "keep"), "kept");
+    EXPECT_EQ(entries(), 1u);
+}
+
+// In a child process, which drops root (root may write anywhere) to the user nobody: a directory it may
+// not write to must give an error and leave the target. Exit code 0 means all of that held.
+void write_into_read_only_directory(const fs::path& target) {
+    if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
+    try {
+        write_file_atomic(target, "new");
+    } catch (const std::system_error& e) {
+        std::_Exit(slurp(target) == "old" && e.code() == std::errc::permission_denied ? 0 : 2);
+    }
+    std::_Exit(1);
+}
+
+TEST_F(AtomicFile, ReadOnlyDirectoryLeavesTargetUntouched) {
+    const fs::path target = dir_ / "out.txt";
+    write_file_atomic(target, "old");
+    fs::permissions(target, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    EXPECT_EXIT(write_into_read_only_directory(target), ::testing::ExitedWithCode(0), "");
+    EXPECT_EQ(slurp(target), "old");
+    EXPECT_EQ(entries(), 1u);
+}
+
+// Run in a child process, so that the file size limit stays there: a write that fails half way must leave
+// the old target and no temporary. Exit code 0 means all of that held.
+void write_beyond_size_limit(const fs::path& target, const fs::path& dir) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+        write_file_atomic(target, std::string(1 << 16, 'n'));
+    } catch (const std::system_error& e) {
+        const bool alone = std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1;
+        std::_Exit(slurp(target) == "old" && alone && e.code() == std::errc::file_too_large ? 0 : 2);
+    }
+    std::_Exit(1);
+}
+
+TEST_F(AtomicFile, FailedWriteLeavesTargetUntouched) {
+    const fs::path target = dir_ / "out.txt";
+    write_file_atomic(target, "old");
+    EXPECT_EXIT(write_beyond_size_limit(target, dir_), ::testing::ExitedWithCode(0), "");
+    EXPECT_EQ(slurp(target), "old");
+}
+
+}  // namespace
+}  // namespace rast

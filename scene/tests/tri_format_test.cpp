@@ -1,0 +1,231 @@
+#include "rast/tri_format.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+namespace rast {
+namespace {
+
+std::uint64_t bits(double d) { return std::bit_cast<std::uint64_t>(d); }
+
+Scene parse(const std::string& text) {
+    std::istringstream in(text);
+    return read_tri(in, "s.tri");
+}
+
+// The what() of the ParseError that reading `text` throws, or "" if it reads.
+std::string error_of(const std::string& text) {
+    try {
+        parse(text);
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(TriFormat, ReadsViewportSamplesAndTriangles) {
+    const Scene s = parse("viewport 64 32\nsamples 4\ntri 0 0 0.5  8 0 0.5  0 8 0.25\n");
+    EXPECT_EQ(s.viewport, (Viewport{64, 32}));
+    EXPECT_EQ(s.samples, 4);
+    ASSERT_EQ(s.triangles.size(), 1u);
+    EXPECT_EQ(s.triangles[0], (Triangle{{{{0, 0, 0.5}, {8, 0, 0.5}, {0, 8, 0.25}}}}));
+}
+
+TEST(TriFormat, SamplesDefaultToOne) { EXPECT_EQ(parse("viewport 4 4\n").samples, 1); }
+
+TEST(TriFormat, TrianglesMayPrecedeTheViewportAndKeepFileOrder) {
+    const Scene s = parse("tri 1 0 0 0 1 0 0 0 1\nviewport 4 4\ntri 2 0 0 0 2 0 0 0 2\n");
+    ASSERT_EQ(s.triangles.size(), 2u);
+    EXPECT_EQ(s.triangles[0].v[0].x, 1.0);
+    EXPECT_EQ(s.triangles[1].v[0].x, 2.0);
+}
+
+TEST(TriFormat, CommentsBlankLinesCrLfAndNoFinalNewline) {
+    const Scene s = parse("# a scene\r\n\r\nviewport 4 4 # size\r\n   \t\n#tri 9 9 9 9 9 9 9 9 9\ntri 0 0 0 1 0 0 0 1 0#x");
+    EXPECT_EQ(s.viewport, (Viewport{4, 4}));
+    ASSERT_EQ(s.triangles.size(), 1u);
+    EXPECT_EQ(s.triangles[0].v[2].y, 1.0);
+}
+
+TEST(TriFormat, NumbersReadAsStrtodDoes) {
+    const Scene s = parse(
+        "viewport 4 4\n"
+        "tri 0.1 0x1.999999999999ap-4 0x1p60  1e-320 -0 0x1.fffffffffffffp+1023  1152921504606846976 -0x0p+0 1E2\n");
+    const auto& v = s.triangles.at(0).v;
+    EXPECT_EQ(bits(v[0].x), 0x3fb999999999999aULL);  // 0.1 rounded to nearest
+    EXPECT_EQ(bits(v[0].y), 0x3fb999999999999aULL);
+    EXPECT_EQ(v[0].z, std::ldexp(1.0, 60));
+    EXPECT_EQ(bits(v[1].x), 0x7e8ULL);  // 1e-320 is the subnormal 2024 * 2^-1074
+    EXPECT_EQ(bits(v[1].y), 0x8000000000000000ULL);
+    EXPECT_EQ(v[1].z, DBL_MAX);
+    EXPECT_EQ(v[2].x, std::ldexp(1.0, 60));
+    EXPECT_EQ(bits(v[2].y), 0x8000000000000000ULL);
+    EXPECT_EQ(v[2].z, 100.0);
+}
+
+TEST(TriFormat, HexFloatIsC99) {
+    EXPECT_EQ(hex_float(12.0), "0x1.8p+3");
+    EXPECT_EQ(hex_float(1.0), "0x1p+0");
+    EXPECT_EQ(hex_float(-0.5), "-0x1p-1");
+    EXPECT_EQ(hex_float(0.0), "0x0p+0");
+    EXPECT_EQ(hex_float(-0.0), "-0x0p+0");
+    EXPECT_EQ(hex_float(0.1), "0x1.999999999999ap-4");
+}
+
+TEST(TriFormat, WriteReadRoundTripIsBitExact) {
+    const double values[] = {-0.0, std::numeric_limits<double>::denorm_min(), 1e-320, DBL_MIN, DBL_MAX, -DBL_MAX,
+                             std::ldexp(1.0, 60), 0.1, 1.0 / 3.0, -7.25, std::nextafter(1.0, 2.0)};
+    Scene scene;
+    scene.viewport = {640, 480};
+    scene.samples = 16;
+    for (double a : values)
+        for (double b : values) scene.triangles.push_back(Triangle{{{{a, b, a}, {b, a, b}, {a, a, b}}}});
+    std::stringstream text;
+    write_tri(text, scene, {{"why", "round trip"}});
+    const TriDocument back = read_tri_document(text, "round.tri");
+    EXPECT_EQ(back.scene.viewport, scene.viewport);
+    EXPECT_EQ(back.scene.samples, 16);
+    EXPECT_EQ(back.header, (TriHeader{{"why", "round trip"}}));
+    ASSERT_EQ(back.scene.triangles.size(), scene.triangles.size());
+    for (std::size_t t = 0; t < scene.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const Vertex& a = scene.triangles[t].v[k];
+            const Vertex& b = back.scene.triangles[t].v[k];
+            EXPECT_EQ(bits(a.x), bits(b.x));
+            EXPECT_EQ(bits(a.y), bits(b.y));
+            EXPECT_EQ(bits(a.z), bits(b.z));
+        }
+}
+
+TEST(TriFormat, WritesTheDocumentedText) {
+    Scene scene;
+    scene.viewport = {8, 4};
+    scene.triangles.push_back(Triangle{{{{0, 0, 0.5}, {12, 0, -0.0}, {0, 2, 1}}}});
+    std::ostringstream out;
+    write_tri(out, scene, {{"properties", "watertight order_independence"}, {"seed", ""}});
+    EXPECT_EQ(out.str(),
+              "# properties: watertight order_independence\n"
+              "# seed:\n"
+              "viewport 8 4\n"
+              "samples 1\n"
+              "tri  0x0p+0 0x0p+0 0x1p-1  0x1.8p+3 0x0p+0 -0x0p+0  0x0p+0 0x1p+1 0x1p+0\n");
+}
+
+TEST(TriFormat, WriteRefusesWhatWouldNotReadBack) {
+    Scene scene;
+    scene.viewport = {8, 4};
+    std::ostringstream out;
+    EXPECT_THROW(write_tri(out, scene, {{"bad key", "v"}}), std::invalid_argument);
+    EXPECT_THROW(write_tri(out, scene, {{"why", "two\nlines"}}), std::invalid_argument);
+    EXPECT_THROW(write_tri(out, scene, {{"why", " padded"}}), std::invalid_argument);
+    scene.triangles.push_back(Triangle{{{{0, 0, 0}, {1, 0, std::nan("")}, {0, 1, 0}}}});
+    EXPECT_THROW(write_tri(out, scene), std::invalid_argument);
+    scene.triangles.clear();
+    scene.samples = 3;
+    EXPECT_THROW(write_tri(out, scene), std::invalid_argument);
+    EXPECT_EQ(out.str(), "");
+}
+
+TEST(TriFormat, HeaderIsTheLeadingKeyValueComments) {
+    std::istringstream in(
+        "# properties: watertight order_independence\n"
+        "# a free comment, not metadata\n"
+        "\n"
+        "#why:  shared edge: bit-identical  \n"
+        "#  seed: 42\n"
+        "viewport 4 4\n"
+        "# late: not header\n");
+    const TriDocument doc = read_tri_document(in, "h.tri");
+    EXPECT_EQ(doc.header, (TriHeader{{"properties", "watertight order_independence"},
+                                     {"why", "shared edge: bit-identical"},
+                                     {"seed", "42"}}));
+}
+
+TEST(TriFormat, RejectsUnknownKeyword) {
+    EXPECT_EQ(error_of("viewport 4 4\ntriangle 0 0 0 1 0 0 0 1 0\n"),
+              "s.tri:2: unknown keyword 'triangle' (expected viewport, samples or tri)");
+    EXPECT_EQ(error_of(std::string("viewport 4 4\n\x01\x00z\n", 16)),
+              "s.tri:2: unknown keyword '\\x01\\x00z' (expected viewport, samples or tri)");
+}
+
+TEST(TriFormat, RejectsWrongArity) {
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1\n"),
+              "s.tri:2: 'tri' expects 9 numbers (three vertices x y z), got 8 values");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1 0 7\n"),
+              "s.tri:2: 'tri' expects 9 numbers (three vertices x y z), got 10 values");
+    EXPECT_EQ(error_of("viewport 4\n"), "s.tri:1: 'viewport' expects 2 integers (width height), got 1 value");
+    EXPECT_EQ(error_of("viewport 4 4\nsamples\n"), "s.tri:2: 'samples' expects 1 integer (1, 4, 8 or 16), got 0 values");
+}
+
+TEST(TriFormat, RejectsBadNumbers) {
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1.5abc 0 0 0 1 0\n"),
+              "s.tri:2: bad number '1.5abc': trailing characters 'abc'");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 x 0 0 0 1 0\n"), "s.tri:2: expected a number, got 'x'");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1,5 0 0 0 1 0\n"),
+              "s.tri:2: bad number '1,5': trailing characters ',5'");
+    EXPECT_EQ(error_of("viewport 4.0 4\n"), "s.tri:1: expected an integer, got '4.0'");
+    EXPECT_EQ(error_of("viewport 99999999999 4\n"), "s.tri:1: integer '99999999999' is out of range");
+}
+
+TEST(TriFormat, RejectsNanAndInfinity) {
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 nan 1 0 0 0 1 0\n"), "s.tri:2: NaN is not allowed: 'nan'");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1 -NAN(12)\n"), "s.tri:2: NaN is not allowed: '-NAN(12)'");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 inf 0 0 0 1 0\n"), "s.tri:2: infinity is not allowed: 'inf'");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 -Infinity 0 0 1 0\n"),
+              "s.tri:2: infinity is not allowed: '-Infinity'");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1e999 0\n"), "s.tri:2: number '1e999' overflows to infinity");
+    EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1 -0x1p1024\n"),
+              "s.tri:2: number '-0x1p1024' overflows to infinity");
+}
+
+TEST(TriFormat, RejectsMissingOrRepeatedViewportAndSamples) {
+    EXPECT_EQ(error_of("tri 0 0 0 1 0 0 0 1 0\n"), "s.tri: missing 'viewport W H' line");
+    EXPECT_EQ(error_of(""), "s.tri: missing 'viewport W H' line");
+    EXPECT_EQ(error_of("viewport 4 4\n\nviewport 4 4\n"), "s.tri:3: second 'viewport' line (the first is line 1)");
+    EXPECT_EQ(error_of("samples 4\nviewport 4 4\nsamples 4\n"), "s.tri:3: second 'samples' line (the first is line 1)");
+}
+
+TEST(TriFormat, RejectsBadSizes) {
+    EXPECT_EQ(error_of("viewport 0 4\n"), "s.tri:1: viewport width must be positive, got 0");
+    EXPECT_EQ(error_of("viewport 4 -3\n"), "s.tri:1: viewport height must be positive, got -3");
+    EXPECT_EQ(error_of("viewport 32769 4\n"), "s.tri:1: viewport width 32769 exceeds the limit 32768");
+    EXPECT_EQ(error_of("viewport 4 4\nsamples 2\n"), "s.tri:2: samples must be 1, 4, 8 or 16, got 2");
+    EXPECT_EQ(error_of("viewport 32768 32768\n"),
+              "s.tri:1: viewport 32768x32768 with 1 samples per pixel has 1073741824 samples, above the limit 268435456");
+    // 8192^2 fits with one sample; the samples line on line 3 makes it too large.
+    EXPECT_EQ(error_of("viewport 8192 8192\n\nsamples 16\n"),
+              "s.tri:3: viewport 8192x8192 with 16 samples per pixel has 1073741824 samples, above the limit 268435456");
+    EXPECT_EQ(parse("viewport 16384 16384\n").viewport, (Viewport{16384, 16384}));
+}
+
+TEST(TriFormat, RejectsUnreadableFile) {
+    const std::filesystem::path missing = std::filesystem::temp_directory_path() / "rast-no-such-dir" / "x.tri";
+    try {
+        read_tri_file(missing);
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(std::string(e.what()), missing.string() + ": cannot open: No such file or directory");
+        EXPECT_EQ(e.line, 0);
+    }
+}
+
+TEST(TriFormat, ParseErrorCarriesItsParts) {
+    try {
+        parse("viewport 4 4\ntri 0 0 0 1 0 0 0 1 zz\n");
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.file, "s.tri");
+        EXPECT_EQ(e.line, 2);
+        EXPECT_EQ(e.message, "expected a number, got 'zz'");
+    }
+}
+
+}  // namespace
+}  // namespace rast
