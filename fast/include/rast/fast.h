@@ -6,6 +6,27 @@
 //   fixed4 / fixed8 / fixed16: vertices snapped to a 1/2^N pixel grid (round to nearest, ties to even),
 //     then exact integer edge functions: bit-identical to the reference on already snapped vertices.
 //   float32 / float64: edge functions in floating point, within edge_error_bound() of the exact edge.
+//
+// Fixed-point range. A triangle whose snapped coordinates and the viewport's extent are all within
+// 2^(29-N) pixels of the origin (fixed8: 2^21) takes the fast path: 64-bit integer edge functions,
+// tiles of 64 x 64 pixels with trivial reject / accept, SIMD rows. Any other triangle, up to
+// coordinates of +-DBL_MAX, takes the wide path: exact big-integer edge functions solved once per sample
+// row for the covered span. Both give exactly the reference's coverage of the snapped triangle.
+//
+// Depth. z is the triangle's plane evaluated in double at the sample; the z-buffer decides the (z, id)
+// order exactly: a comparison the double values and their error bounds cannot settle is made in exact
+// rational arithmetic. The depth written is that double plane value, which differs from the reference's
+// exact depth rounded to nearest by at most a few ulps of the depths and plane slopes involved (a
+// running error bound kept per triangle; it grows without limit only for near-degenerate triangles).
+// Where double arithmetic overflows, the depth written is the exact depth rounded.
+//
+// Determinism. The framebuffer is identical for every thread count and every SIMD target (Highway
+// dynamic dispatch: SSE4, AVX2, AVX-512 where present): coverage is exact or evaluated in the same IEEE
+// operations everywhere, and each tile composes its triangles in id order.
+//
+// Input. Every call throws std::invalid_argument for a viewport that is not 1..2^24 pixels on each
+// side, a sample count other than 1, 4, 8, 16, a non-finite coordinate (naming the triangle and the
+// vertex), or a negative thread count.
 #pragma once
 
 #include <rast/scene.h>
@@ -24,6 +45,7 @@ struct Options {
     int threads = 1;  // 0: all hardware threads. The result is identical for every count.
 };
 
+// "fixed4", "fixed8", "fixed16", "float32", "float64"; parse_precision is its inverse.
 std::string_view name(Precision p);
 std::optional<Precision> parse_precision(std::string_view s);
 
@@ -33,5 +55,18 @@ Framebuffer render(const Scene& scene, const Options& options = {});
 // The framebuffer indices (Framebuffer::index) of every sample that `t` covers, ascending; no depth test.
 std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int samples,
                                          Precision precision = Precision::fixed8);
+
+// The triangle as a fixed-point mode sees it: x and y rounded to the nearest multiple of 2^-N
+// (ties to even), z unchanged. The identity for the float modes.
+Triangle snap(const Triangle& t, Precision precision);
+
+// For the float modes: an upper bound on |E_computed(p) - E_exact(p)| over every sample p of the
+// viewport, for each edge E(p) = (b - a) x (p - a) of `t` (a, b the input doubles, any vertex order).
+// A sample can be classified differently from the reference only if |E_exact(p)| <= this bound for
+// some edge. Derived by standard error analysis of the evaluation (b.x - a.x) * (p.y - a.y) -
+// (b.y - a.y) * (p.x - a.x), each operation rounded to nearest in the mode's type (u = 2^-24 or 2^-53),
+// including the rounding of every input to float for float32. +infinity where the evaluation can
+// overflow; 0 for the fixed modes, which are exact on the snapped triangle.
+double edge_error_bound(const Triangle& t, Precision precision, Viewport vp);
 
 }  // namespace rast::fast

@@ -1,0 +1,38 @@
+// The decisions double arithmetic cannot settle, made exactly (Boost.Multiprecision, private to
+// exact.cpp): triangle orientation on arbitrary doubles, the depth order at a sample, and the covered
+// spans of a triangle beyond the 64-bit fixed-point range (the wide path).
+#pragma once
+
+#include <rast/scene.h>
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace rast::fast::detail {
+
+using Corners = std::array<Vertex, 3>;
+
+// Sign (-1, 0, 1) of (v1 - v0) x (v2 - v0): 1 for counter-clockwise.
+int orientation(const Corners& v);
+
+// Sign of depth_t(x, y) - depth_u(x, y), the exact planes of two non-degenerate triangles.
+int compare_depth(const Corners& t, const Corners& u, double x, double y);
+
+// The exact depth of the plane of `t` at (x, y), rounded to a double.
+double exact_depth(const Corners& t, double x, double y);
+
+// A run of covered pixels [lo, hi] in one sample row; empty when lo > hi.
+struct Span {
+    int lo, hi;
+};
+
+// For a counter-clockwise triangle whose coordinates are multiples of 2^-bits: for each pixel row j in
+// [j_lo, j_hi] and each sample s (row index (j - j_lo) * offsets.size() + s), the pixels i in
+// [i_lo, i_hi] whose sample (i + offset.x, j + offset.y) the triangle covers. inclusive[k] says whether
+// edge v[k] -> v[k+1] owns the samples exactly on it.
+std::vector<Span> wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                             std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo,
+                             int j_hi);
+
+}  // namespace rast::fast::detail

@@ -1,0 +1,42 @@
+// Precision names for the command line, and the snapped triangle a fixed mode rasterizes.
+#include "snap.h"
+
+#include <rast/fast.h>
+
+#include <array>
+
+namespace rast::fast {
+namespace {
+constexpr std::array<std::pair<Precision, std::string_view>, 5> kNames = {{
+    {Precision::fixed4, "fixed4"},
+    {Precision::fixed8, "fixed8"},
+    {Precision::fixed16, "fixed16"},
+    {Precision::float32, "float32"},
+    {Precision::float64, "float64"},
+}};
+}  // namespace
+
+std::string_view name(Precision p) {
+    for (const auto& [precision, text] : kNames)
+        if (precision == p) return text;
+    return "unknown";
+}
+
+std::optional<Precision> parse_precision(std::string_view s) {
+    for (const auto& [precision, text] : kNames)
+        if (text == s) return precision;
+    return std::nullopt;
+}
+
+Triangle snap(const Triangle& t, Precision precision) {
+    const int bits = detail::subpixel_bits(precision);
+    if (bits == 0) return t;
+    Triangle s = t;
+    for (Vertex& v : s.v) {
+        v.x = detail::snap_coordinate(v.x, bits);
+        v.y = detail::snap_coordinate(v.y, bits);
+    }
+    return s;
+}
+
+}  // namespace rast::fast

@@ -1,0 +1,178 @@
+// Triangle setup: everything the traversal needs, computed once per triangle. Templated on the injected
+// fault so that the library (Fault::none) carries no trace of the faulty variants.
+#pragma once
+
+#include "bounded.h"
+#include "exact.h"
+#include "snap.h"
+
+#include <rast/fast.h>
+#include <rast/fast_faults.h>
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace rast::fast::detail {
+
+// The 64-bit path's range in fixed units: with every vertex and sample within 2^29 of the origin, an
+// edge function |A (X - ax) + B (Y - ay)| stays below 2^61 and its bias, steps and sums fit an int64.
+inline constexpr double kFixedRange = 0x1p29;
+
+// What one call rasterizes against: the viewport, the precision and the sample positions.
+struct Context {
+    Viewport vp;
+    Precision precision;
+    int bits;                                 // subpixel bits, 0 for the float modes
+    std::vector<SamplePoint> offsets;         // per sample, inside the pixel
+    std::vector<std::int64_t> sx, sy;         // the offsets in fixed units
+    double ox_min, ox_max, oy_min, oy_max;    // their extent
+    bool fixed_fits;                          // the viewport itself is inside kFixedRange
+};
+
+template <Fault F>
+Context make_context(Viewport vp, int samples, Precision precision) {
+    Context c{vp, precision, subpixel_bits(precision), {}, {}, {}, 1, 0, 1, 0, false};
+    for (SamplePoint o : sample_pattern(samples)) {
+        if constexpr (F == Fault::integer_sample_positions) o = {o.x - 0.5, o.y - 0.5};
+        c.offsets.push_back(o);
+        // Offsets are multiples of 1/16 and bits >= 4: exact integers in fixed units.
+        c.sx.push_back(static_cast<std::int64_t>(std::ldexp(o.x, c.bits)));
+        c.sy.push_back(static_cast<std::int64_t>(std::ldexp(o.y, c.bits)));
+        c.ox_min = std::min(c.ox_min, o.x);
+        c.ox_max = std::max(c.ox_max, o.x);
+        c.oy_min = std::min(c.oy_min, o.y);
+        c.oy_max = std::max(c.oy_max, o.y);
+    }
+    const double limit = std::ldexp(kFixedRange, -c.bits);
+    c.fixed_fits = vp.width + 1 <= limit && vp.height + 1 <= limit;
+    return c;
+}
+
+enum class Path : std::uint8_t { fixed, wide, floating };
+
+struct FixedEdge {
+    std::int64_t a, b, c;  // E(X, Y) = a X + b Y + c in fixed units, tie bias included: covered iff >= 0
+};
+
+struct FloatEdge {
+    double ax, ay, d1, d3;  // a, b - a in the mode's type (exactly representable in it)
+    bool inclusive;         // owns the samples exactly on it
+};
+
+// z(p) = z0 + (a (px - x0) + b (py - y0)) in double; err bounds 4x its distance from the exact plane over
+// the bounding box (the factor covers rounding z +- err in the depth test).
+struct Plane {
+    double x0, y0, z0, a, b, err;
+};
+
+struct Setup {
+    bool empty = true;  // covers no sample of the viewport
+    Path path = Path::fixed;
+    int i_lo = 0, i_hi = -1, j_lo = 0, j_hi = -1;  // pixel bounding box inside the viewport, inclusive
+    Corners v{};                                    // counter-clockwise; snapped in the fixed modes
+    std::array<FixedEdge, 3> fixed{};
+    std::array<FloatEdge, 3> flt{};
+    Plane plane{};
+    std::vector<Span> spans;  // wide path: per sample row, see wide_spans
+};
+
+// The tie rule of shared/DESIGN.md for edge a -> b of a counter-clockwise triangle: left (dy < 0) and
+// top (dy = 0, dx < 0) edges own their samples.
+template <Fault F>
+bool owns_ties(const Vertex& a, const Vertex& b) {
+    if (b.y < a.y) return true;
+    if constexpr (F == Fault::wrong_tie_bias) return b.y == a.y && b.x > a.x;
+    return b.y == a.y && b.x < a.x;
+}
+
+// Pixels whose samples can lie in [lo, hi] along one axis, given the sample offsets' extent there.
+// Rounding is monotone and the bounds are integers, so floor/ceil of the rounded difference are exact.
+template <Fault F>
+bool pixel_range(double lo, double hi, double o_min, double o_max, int size, int& first, int& last) {
+    double from = std::ceil(lo - o_max), to = std::floor(hi - o_min);
+    if constexpr (F == Fault::bbox_one_short) to -= 1;
+    from = std::max(from, 0.0);
+    to = std::min(to, size - 1.0);
+    if (!(from <= to)) return false;
+    first = static_cast<int>(from);
+    last = static_cast<int>(to);
+    return true;
+}
+
+inline Plane make_plane(const Corners& v, const Setup& s, const Context& c) {
+    const double u = kUnitDouble;
+    const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x), u), dy1 = sub(exact(v[1].y), exact(v[0].y), u);
+    const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x), u), dy2 = sub(exact(v[2].y), exact(v[0].y), u);
+    const Bounded dz1 = sub(exact(v[1].z), exact(v[0].z), u), dz2 = sub(exact(v[2].z), exact(v[0].z), u);
+    const Bounded det = sub(mul(dx1, dy2, u), mul(dx2, dy1, u), u);
+    const Bounded a = div(sub(mul(dz1, dy2, u), mul(dz2, dy1, u), u), det, u);
+    const Bounded b = div(sub(mul(dx1, dz2, u), mul(dx2, dz1, u), u), det, u);
+    // The evaluation z0 + (a (px - x0) + b (py - y0)) bounded over the box, from the magnitudes.
+    const double reach_x = std::max(std::abs(s.i_lo + c.ox_min - v[0].x), std::abs(s.i_hi + c.ox_max - v[0].x));
+    const double reach_y = std::max(std::abs(s.j_lo + c.oy_min - v[0].y), std::abs(s.j_hi + c.oy_max - v[0].y));
+    const Bounded tx = mul({std::abs(a.v), a.e}, {reach_x, u * reach_x}, u);
+    const Bounded ty = mul({std::abs(b.v), b.e}, {reach_y, u * reach_y}, u);
+    const Bounded z = add(exact(std::abs(v[0].z)), add(tx, ty, u), u);
+    double err = 4 * z.e * kSlack + 4 * DBL_TRUE_MIN;
+    if (!std::isfinite(err)) err = std::numeric_limits<double>::infinity();
+    return {v[0].x, v[0].y, v[0].z, a.v, b.v, err};
+}
+
+template <Fault F>
+Setup setup_triangle(const Triangle& t, const Context& c) {
+    Setup s;
+    s.v = snap(t, c.precision).v;
+    const int orient = orientation(s.v);
+    if (orient == 0) return s;  // zero area covers nothing
+    if (orient < 0) std::swap(s.v[1], s.v[2]);
+    const auto [xmin, xmax] = std::minmax({s.v[0].x, s.v[1].x, s.v[2].x});
+    const auto [ymin, ymax] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
+    if (!pixel_range<F>(xmin, xmax, c.ox_min, c.ox_max, c.vp.width, s.i_lo, s.i_hi) ||
+        !pixel_range<F>(ymin, ymax, c.oy_min, c.oy_max, c.vp.height, s.j_lo, s.j_hi))
+        return s;
+    std::array<bool, 3> inclusive;
+    for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(s.v[k], s.v[(k + 1) % 3]);
+
+    if (!is_fixed(c.precision)) {
+        s.path = Path::floating;
+        const bool single = c.precision == Precision::float32;
+        const auto in_type = [single](double x) { return single ? double(float(x)) : x; };
+        for (int k = 0; k < 3; ++k) {
+            const Vertex& p = s.v[k];
+            const Vertex& q = s.v[(k + 1) % 3];
+            const double ax = in_type(p.x), ay = in_type(p.y), bx = in_type(q.x), by = in_type(q.y);
+            // The differences rounded once in the mode's type: float - float is correctly rounded in float.
+            s.flt[k] = {ax, ay, single ? double(float(bx) - float(ax)) : bx - ax,
+                        single ? double(float(by) - float(ay)) : by - ay, inclusive[k]};
+        }
+    } else {
+        const double limit = std::ldexp(kFixedRange, -c.bits);
+        const bool fits = c.fixed_fits && std::all_of(s.v.begin(), s.v.end(), [limit](const Vertex& p) {
+                              return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
+                          });
+        if (fits) {
+            s.path = Path::fixed;
+            for (int k = 0; k < 3; ++k) {
+                const Vertex& p = s.v[k];
+                const Vertex& q = s.v[(k + 1) % 3];
+                const auto fixed = [&c](double x) { return static_cast<std::int64_t>(std::ldexp(x, c.bits)); };
+                const std::int64_t ax = fixed(p.x), ay = fixed(p.y);
+                const std::int64_t a = ay - fixed(q.y), b = fixed(q.x) - ax;
+                // E >= 0 on an owning edge, E > 0 (E - 1 >= 0 for integers) on the others.
+                s.fixed[k] = {a, b, -(a * ax + b * ay) - (inclusive[k] ? 0 : 1)};
+            }
+        } else {
+            s.path = Path::wide;
+            s.spans = wide_spans(s.v, c.bits, inclusive, c.offsets, s.i_lo, s.i_hi, s.j_lo, s.j_hi);
+        }
+    }
+    s.plane = make_plane(s.v, s, c);
+    s.empty = false;
+    return s;
+}
+
+}  // namespace rast::fast::detail

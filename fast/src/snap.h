@@ -1,0 +1,32 @@
+// Snapping to the fixed-point grid: round to nearest, ties to even, as Direct3D 11 does.
+#pragma once
+
+#include <rast/fast.h>
+
+#include <cmath>
+
+namespace rast::fast::detail {
+
+// N for fixedN, 0 for the float modes.
+constexpr int subpixel_bits(Precision p) {
+    switch (p) {
+        case Precision::fixed4: return 4;
+        case Precision::fixed8: return 8;
+        case Precision::fixed16: return 16;
+        case Precision::float32:
+        case Precision::float64: return 0;
+    }
+    return 0;
+}
+
+constexpr bool is_fixed(Precision p) { return subpixel_bits(p) != 0; }
+
+// x rounded to the nearest multiple of 2^-bits. Scaling by a power of two is exact, and a double of
+// magnitude >= 2^(52-bits) is already a multiple of 2^-bits (its ulp is at least that), which also
+// keeps x·2^bits from overflowing. std::nearbyint rounds ties to even under the default rounding mode.
+inline double snap_coordinate(double x, int bits) {
+    if (!(std::abs(x) < std::ldexp(1.0, 52 - bits))) return x;
+    return std::ldexp(std::nearbyint(std::ldexp(x, bits)), -bits);
+}
+
+}  // namespace rast::fast::detail
