@@ -1,0 +1,97 @@
+// The z-buffer: smaller z is nearer, equal depth goes to the lower id, decided exactly.
+#include "pixels.h"
+
+#include <gtest/gtest.h>
+
+namespace rast::fast {
+namespace {
+
+using testing::tri;
+
+class Depth : public ::testing::TestWithParam<Precision> {};
+
+Triangle with_z(Triangle t, double z0, double z1, double z2) {
+    t.v[0].z = z0;
+    t.v[1].z = z1;
+    t.v[2].z = z2;
+    return t;
+}
+
+TEST_P(Depth, EqualDepthGoesToTheLowerId) {
+    Scene scene;
+    scene.viewport = {4, 4};
+    const Triangle t = tri(0, 0, 8, 0, 0, 8, 0.25);
+    scene.triangles = {t, t, t};
+    const Framebuffer fb = render(scene, {GetParam(), 1});
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_EQ(fb.id(i, j), 0);
+            EXPECT_EQ(fb.depth[fb.index(i, j)], 0.25);
+        }
+}
+
+// Two different, coplanar triangles on the plane z = (x + y) / 8: where both cover a sample their
+// exact depths are equal, whatever their double plane coefficients, so the lower id wins.
+TEST_P(Depth, CoplanarOverlapIsATieBrokenById) {
+    Scene scene;
+    scene.viewport = {8, 8};
+    const auto plane = [](double x, double y) { return (x + y) / 8; };
+    const Triangle a = with_z(tri(0, 0, 8, 0, 0, 8), plane(0, 0), plane(8, 0), plane(0, 8));
+    // On the 1/16 grid, so that snapping keeps the triangle on the plane.
+    const Triangle b = with_z(tri(0.125, 0.3125, 7.6875, 1.3125, 2.875, 7.0625), plane(0.125, 0.3125),
+                              plane(7.6875, 1.3125), plane(2.875, 7.0625));
+    for (const bool a_first : {true, false}) {
+        scene.triangles = a_first ? std::vector{a, b} : std::vector{b, a};
+        const Framebuffer fb = render(scene, {GetParam(), 1});
+        // (2.5, 2.5) is inside both: the triangle listed first owns it.
+        EXPECT_EQ(fb.id(2, 2), 0);
+        EXPECT_EQ(fb.id(3, 1), 0);
+        // (6.5, 6.5) is inside neither.
+        EXPECT_EQ(fb.id(6, 6), -1);
+    }
+}
+
+// A covers the viewport with z = x, B with z = c: A is nearer where x < c. At c = 4.5 the centre
+// x = 4.5 is an exact tie, owned by the lower id.
+TEST_P(Depth, Interpenetration) {
+    Scene scene;
+    scene.viewport = {8, 2};
+    const Triangle slope = with_z(tri(0, 0, 16, 0, 0, 16), 0, 16, 0);
+    const Triangle flat = tri(0, 0, 16, 0, 0, 16, 4);
+    scene.triangles = {slope, flat};
+    Framebuffer fb = render(scene, {GetParam(), 1});
+    for (int i = 0; i < 8; ++i) EXPECT_EQ(fb.id(i, 1), i <= 3 ? 0 : 1) << i;
+    EXPECT_EQ(fb.depth[fb.index(2, 1)], 2.5);
+    EXPECT_EQ(fb.depth[fb.index(6, 1)], 4.0);
+
+    const Triangle tie = tri(0, 0, 16, 0, 0, 16, 4.5);
+    scene.triangles = {slope, tie};
+    fb = render(scene, {GetParam(), 1});
+    EXPECT_EQ(fb.id(4, 0), 0);
+    EXPECT_EQ(fb.id(5, 0), 1);
+    scene.triangles = {tie, slope};
+    fb = render(scene, {GetParam(), 1});
+    EXPECT_EQ(fb.id(4, 0), 0);
+    EXPECT_EQ(fb.id(3, 0), 1);
+}
+
+// The per-sample z-buffer with 4 samples: the plane z = x - 0.5 against the flat z = 0 inside pixel
+// (0, 0): samples with x < 0.5 (samples 2 at x = 0.125 and 0 at 0.375) are nearer on the slope.
+TEST_P(Depth, PerSampleDepth) {
+    Scene scene;
+    scene.viewport = {1, 1};
+    scene.samples = 4;
+    scene.triangles = {with_z(tri(-4, -4, 8, -4, -4, 8), -4.5, 7.5, -4.5), tri(-4, -4, 8, -4, -4, 8, 0)};
+    const Framebuffer fb = render(scene, {GetParam(), 1});
+    EXPECT_EQ(fb.id(0, 0, 0), 0);
+    EXPECT_EQ(fb.id(0, 0, 1), 1);
+    EXPECT_EQ(fb.id(0, 0, 2), 0);
+    EXPECT_EQ(fb.id(0, 0, 3), 1);
+    EXPECT_EQ(fb.depth[fb.index(0, 0, 2)], 0.125 - 0.5);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllModes, Depth, ::testing::ValuesIn(testing::kAllPrecisions),
+                         [](const auto& info) { return std::string(name(info.param)); });
+
+}  // namespace
+}  // namespace rast::fast

@@ -1,0 +1,99 @@
+// Triangles far outside the viewport or beyond the 64-bit fixed-point range: the wide path must give
+// exactly the snapped triangle's coverage, never overflow, loop or write out of bounds.
+#include "pixels.h"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+
+namespace rast::fast {
+namespace {
+
+using testing::covered_pixels;
+using testing::Pixels;
+using testing::tri;
+
+Pixels all_pixels(Viewport vp) {
+    Pixels out;
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i) out.insert({i, j});
+    return out;
+}
+
+Pixels columns_from(int first, Viewport vp) {
+    Pixels out;
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = first; i < vp.width; ++i) out.insert({i, j});
+    return out;
+}
+
+class GuardBand : public ::testing::TestWithParam<Precision> {};
+
+TEST_P(GuardBand, HugeTriangleCoversTheViewport) {
+    const Viewport vp{8, 8};
+    for (const double r : {0x1p20, 0x1p40, 0x1p60}) {
+        EXPECT_EQ(covered_pixels(tri(-r, -r, 2 * r, -r, -r, 2 * r), vp, GetParam()), all_pixels(vp)) << r;
+    }
+}
+
+// A vertical left edge x = 2.5 through the centres, its ends and the third vertex far away: the centres
+// on it are owned (it runs down, counter-clockwise), so columns 2.. are covered. Exact in every mode:
+// (b - a).x = 0 and (p - a).x = 0 on the edge.
+TEST_P(GuardBand, FarVerticesKeepTheTieRule) {
+    const Viewport vp{8, 4};
+    for (const double r : {0x1p20, 0x1p21, 0x1p22, 0x1p40, 0x1p60})
+        EXPECT_EQ(covered_pixels(tri(2.5, -r, 2 * r, 0, 2.5, r), vp, GetParam()), columns_from(2, vp)) << r;
+}
+
+TEST_P(GuardBand, TinyTrianglesFarOutside) {
+    const Viewport vp{8, 8};
+    for (const double d : {1e9, 0x1p40, 0x1p60, -0x1p60, 1e300}) {
+        const double step = d * 0x1p-50;  // a few ulps: a tiny triangle at that magnitude
+        EXPECT_TRUE(covered_pixels(tri(d, d, d + step, d, d, d + step), vp, GetParam()).empty()) << d;
+        EXPECT_TRUE(covered_pixels(tri(d, 0.5, d + step, 0.5, d, 0.5 + step), vp, GetParam()).empty()) << d;
+    }
+}
+
+TEST_P(GuardBand, ExtremeCoordinatesDoNotCrash) {
+    Scene scene;
+    scene.viewport = {16, 16};
+    scene.samples = 4;
+    scene.triangles = {tri(-DBL_MAX, -DBL_MAX, DBL_MAX, -DBL_MAX, 0, DBL_MAX),
+                       tri(DBL_MAX, DBL_MAX, -DBL_MAX, DBL_MAX, DBL_MAX, -DBL_MAX),
+                       tri(-DBL_MAX, 0.5, DBL_MAX, 0.5, 0.5, DBL_MIN)};
+    const Framebuffer fb = render(scene, {GetParam(), 2});
+    ASSERT_EQ(fb.ids.size(), 16u * 16u * 4u);
+    for (std::int32_t id : fb.ids) EXPECT_TRUE(id >= -1 && id <= 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllModes, GuardBand, ::testing::ValuesIn(testing::kAllPrecisions),
+                         [](const auto& info) { return std::string(name(info.param)); });
+
+// In exact arithmetic, a triangle spanning +-DBL_MAX still has an exact coverage: the fixed modes (wide
+// path) must find it. The first triangle's bottom edge is far below and its slanted edges pass far
+// outside the viewport: every pixel.
+TEST(GuardBandFixed, DblMaxTriangleIsExact) {
+    const Viewport vp{8, 8};
+    for (Precision p : {Precision::fixed4, Precision::fixed8, Precision::fixed16}) {
+        EXPECT_EQ(covered_pixels(tri(-DBL_MAX, -DBL_MAX, DBL_MAX, -DBL_MAX, 0, DBL_MAX), vp, p), all_pixels(vp));
+        // Bottom edge y = 0.5 from -DBL_MAX to DBL_MAX (its centres not owned), apex (0.5, 2.5) on a right
+        // edge (not owned): at y = 1.5 the sides are near x = -+DBL_MAX/2, so exactly row 1 is covered.
+        const Pixels row1 = covered_pixels(tri(-DBL_MAX, 0.5, DBL_MAX, 0.5, 0.5, 2.5), vp, p);
+        Pixels expected;
+        for (int i = 0; i < 8; ++i) expected.insert({i, 1});
+        EXPECT_EQ(row1, expected);
+    }
+}
+
+// The fixed-point range: just inside 2^(29-N) the 64-bit path, just outside the wide path, same answer.
+TEST(GuardBandFixed, BothSidesOfTheRange) {
+    const Viewport vp{8, 4};
+    for (const auto& [p, limit] : {std::pair{Precision::fixed4, 0x1p25}, {Precision::fixed8, 0x1p21},
+                                   {Precision::fixed16, 0x1p13}})
+        for (const double r : {limit / 2, limit, 2 * limit})
+            EXPECT_EQ(covered_pixels(tri(2.5, -r, r, 0, 2.5, r), vp, p), columns_from(2, vp)) << r;
+}
+
+}  // namespace
+}  // namespace rast::fast
