@@ -1,0 +1,289 @@
+#include "mesh_text_check.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <fstream>
+#include <vector>
+
+#include "number_token.h"
+#include "rast/parse_error.h"
+
+namespace rast::detail {
+
+namespace {
+
+// The non-blank lines of a text file as tokens, with their line numbers.
+class TokenLines {
+public:
+    TokenLines(std::istream& in, std::string file, bool hash_comments)
+        : in_(in), file_(std::move(file)), hash_comments_(hash_comments) {}
+
+    bool next() {
+        std::string text;
+        while (std::getline(in_, text)) {
+            ++line_;
+            if (hash_comments_) text.erase(std::min(text.find('#'), text.size()));
+            tokens_ = split_tokens(text);
+            if (!tokens_.empty()) return true;
+        }
+        if (in_.bad()) throw ParseError(file_, 0, "read error after line " + std::to_string(line_));
+        tokens_.clear();
+        return false;
+    }
+    // Like next(), but the end of the file is an error: it ends before `what`.
+    void expect(const std::string& what) {
+        if (!next()) fail("the file ends before " + what);
+    }
+
+    const std::vector<std::string>& tokens() const { return tokens_; }
+    std::size_t size() const { return tokens_.size(); }
+    const std::string& operator[](std::size_t k) const { return tokens_[k]; }
+    double number(std::size_t k) const { return parse_finite_double(tokens_[k], file_, line_); }
+    long long integer(std::size_t k) const { return integer(tokens_[k]); }
+    long long integer(const std::string& text) const { return parse_integer(text, file_, line_); }
+    [[noreturn]] void fail(const std::string& what) const { throw ParseError(file_, line_, what); }
+
+private:
+    std::istream& in_;
+    std::string file_;
+    bool hash_comments_;
+    std::int64_t line_ = 0;
+    std::vector<std::string> tokens_;
+};
+
+std::string values(std::size_t n) { return std::to_string(n) + (n == 1 ? " value" : " values"); }
+
+// Every vertex index of one face: in [0, vertex_count) and each used once (OpenMesh drops such faces).
+class FaceCheck {
+public:
+    FaceCheck(const TokenLines& in, long long vertex_count) : in_(in), vertex_count_(vertex_count) {}
+    void add(long long index, const std::string& as_written) {
+        if (index < 0 || index >= vertex_count_)
+            in_.fail("vertex index " + as_written + " is out of range (" + std::to_string(vertex_count_) +
+                     " vertices)");
+        if (std::find(used_.begin(), used_.end(), index) != used_.end())
+            in_.fail("the face uses vertex " + as_written + " twice");
+        used_.push_back(index);
+    }
+
+private:
+    const TokenLines& in_;
+    long long vertex_count_;
+    std::vector<long long> used_;
+};
+
+MeshFileCheck check_obj(TokenLines& in) {
+    MeshFileCheck result{0, std::nullopt};
+    long long vertices = 0;
+    while (in.next()) {
+        if (in[0] == "v") {
+            if (in.size() < 4) in.fail("'v' expects at least 3 numbers (x y z), got " + values(in.size() - 1));
+            for (std::size_t k = 1; k < in.size(); ++k) in.number(k);
+            ++vertices;
+        } else if (in[0] == "f") {
+            if (in.size() < 4) in.fail("'f' expects at least 3 vertices, got " + values(in.size() - 1));
+            // OBJ counts from 1; a negative index counts back from the last vertex so far.
+            FaceCheck face(in, vertices);
+            for (std::size_t k = 1; k < in.size(); ++k) {
+                const std::string written = in[k].substr(0, in[k].find('/'));
+                const long long index = in.integer(written);
+                face.add(index > 0 ? index - 1 : index < 0 ? vertices + index : -1, written);
+            }
+            *result.triangles += in.size() - 3;
+        }
+    }
+    return result;
+}
+
+// The tokens of the current line, as one line of text.
+std::string joined(const TokenLines& in, std::size_t first = 0) {
+    std::string line;
+    for (std::size_t k = first; k < in.size(); ++k) line += (k > first ? " " : "") + in[k];
+    return line + "\n";
+}
+
+MeshFileCheck check_off(TokenLines& in) {
+    in.expect("the OFF header");
+    const std::string keyword = in[0];
+    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+        in.fail("expected an OFF header, got " + quote_token(keyword));
+    if (std::find(in.tokens().begin(), in.tokens().end(), "BINARY") != in.tokens().end()) return {};
+    MeshFileCheck result{0, keyword + "\n"};
+    std::string& text = *result.off_for_openmesh;
+    std::size_t first = 1;
+    if (in.size() == 1) {
+        in.expect("the counts 'vertices faces edges'");
+        first = 0;
+    }
+    if (in.size() - first != 3)
+        in.fail("expected the counts 'vertices faces edges', got " + values(in.size() - first));
+    const long long vertex_count = in.integer(first), face_count = in.integer(first + 1);
+    in.integer(first + 2);
+    if (vertex_count < 0 || face_count < 0) in.fail("negative vertex or face count");
+    text += joined(in, first);
+    for (long long v = 0; v < vertex_count; ++v) {
+        in.expect("vertex " + std::to_string(v) + " of " + std::to_string(vertex_count));
+        if (in.size() < 3) in.fail("a vertex needs at least 3 numbers (x y z), got " + values(in.size()));
+        for (std::size_t k = 0; k < in.size(); ++k) in.number(k);
+        text += joined(in);
+    }
+    for (long long f = 0; f < face_count; ++f) {
+        in.expect("face " + std::to_string(f) + " of " + std::to_string(face_count));
+        const long long n = in.integer(0);
+        if (n < 3) in.fail("a face needs at least 3 vertices, got " + std::to_string(n));
+        if (static_cast<long long>(in.size()) - 1 < n)
+            in.fail("the face lists " + std::to_string(n) + " vertices but gives " + values(in.size() - 1));
+        FaceCheck face(in, vertex_count);
+        for (long long k = 1; k <= n; ++k) face.add(in.integer(static_cast<std::size_t>(k)), in[static_cast<std::size_t>(k)]);
+        for (std::size_t k = static_cast<std::size_t>(n) + 1; k < in.size(); ++k) in.number(k);
+        *result.triangles += static_cast<std::size_t>(n) - 2;
+        text += joined(in);
+    }
+    return result;
+}
+
+struct PlyProperty {
+    std::string name;
+    bool list = false;
+};
+
+struct PlyElement {
+    std::string name;
+    long long count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+MeshFileCheck check_ply(TokenLines& in) {
+    in.expect("the PLY header");
+    if (in.size() != 1 || in[0] != "ply") in.fail("expected 'ply' on the first line");
+    std::vector<PlyElement> elements;
+    for (in.expect("'end_header'"); in[0] != "end_header"; in.expect("'end_header'")) {
+        if (in[0] == "format") {
+            if (in.size() != 3) in.fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+            if (in[1] != "ascii") return {};  // binary: OpenMesh reads it, the finite check follows
+        } else if (in[0] == "element") {
+            if (in.size() != 3) in.fail("expected 'element NAME COUNT'");
+            elements.push_back({in[1], in.integer(2), {}});
+            if (elements.back().count < 0) in.fail("negative element count");
+        } else if (in[0] == "property") {
+            if (elements.empty()) in.fail("'property' before any 'element'");
+            const bool list = in.size() == 5 && in[1] == "list";
+            if (!list && in.size() != 3) in.fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
+            elements.back().properties.push_back({in[in.size() - 1], list});
+        } else if (in[0] != "comment" && in[0] != "obj_info") {
+            in.fail("unknown PLY header keyword " + quote_token(in[0]));
+        }
+    }
+    MeshFileCheck result{0, std::nullopt};
+    long long vertex_count = 0;
+    for (const PlyElement& e : elements)
+        if (e.name == "vertex") vertex_count = e.count;
+    for (const PlyElement& e : elements)
+        for (long long row = 0; row < e.count; ++row) {
+            in.expect(e.name + " " + std::to_string(row) + " of " + std::to_string(e.count));
+            std::size_t at = 0;
+            for (const PlyProperty& p : e.properties) {
+                if (at >= in.size()) in.fail("too few values for element '" + e.name + "': " + values(in.size()));
+                if (!p.list) {
+                    in.number(at++);
+                    continue;
+                }
+                const long long n = in.integer(at++);
+                if (n < 0 || n > static_cast<long long>(in.size() - at))
+                    in.fail("list '" + p.name + "' of " + std::to_string(n) + " items does not fit the line");
+                const bool indices = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+                if (indices && n < 3) in.fail("a face needs at least 3 vertices, got " + std::to_string(n));
+                if (indices) *result.triangles += static_cast<std::size_t>(n) - 2;
+                FaceCheck face(in, vertex_count);
+                for (long long k = 0; k < n; ++k, ++at) {
+                    if (indices)
+                        face.add(in.integer(at), in[at]);
+                    else
+                        in.number(at);
+                }
+            }
+            if (at != in.size())
+                in.fail("too many values for element '" + e.name + "': " + values(in.size()) + ", expected " +
+                        std::to_string(at));
+        }
+    return result;
+}
+
+void check_ascii_stl(TokenLines& in) {
+    in.expect("'solid'");
+    if (in[0] != "solid") in.fail("expected 'solid' (and the size does not fit a binary STL)");
+    int loop_vertices = -1;  // -1 outside an 'outer loop'
+    while (in.next()) {
+        const std::string& keyword = in[0];
+        if (keyword == "facet") {
+            if (in.size() != 5 || in[1] != "normal") in.fail("expected 'facet normal NX NY NZ'");
+            for (std::size_t k = 2; k < 5; ++k) in.number(k);
+        } else if (keyword == "outer") {
+            if (in.size() != 2 || in[1] != "loop") in.fail("expected 'outer loop'");
+            loop_vertices = 0;
+        } else if (keyword == "vertex") {
+            if (in.size() != 4) in.fail("'vertex' expects 3 numbers (x y z), got " + values(in.size() - 1));
+            if (loop_vertices < 0) in.fail("'vertex' outside 'outer loop'");
+            for (std::size_t k = 1; k < 4; ++k) in.number(k);
+            ++loop_vertices;
+        } else if (keyword == "endloop") {
+            if (loop_vertices != 3)
+                in.fail("a facet has " + std::to_string(loop_vertices) + " vertices; STL facets are triangles");
+            loop_vertices = -1;
+        } else if (keyword != "endfacet" && keyword != "endsolid" && keyword != "solid") {
+            in.fail("unknown STL keyword " + quote_token(keyword));
+        }
+    }
+}
+
+// A binary STL is an 80-byte header, a 32-bit little-endian triangle count and 50 bytes per triangle
+// (normal, three corners, as little-endian float32, and 2 attribute bytes); a file whose size matches
+// that is binary even if its header starts with "solid", as many do. Returns the count if binary.
+std::optional<std::uint32_t> binary_stl_triangles(std::istream& in, std::uintmax_t size) {
+    std::array<unsigned char, 84> head{};
+    if (size < head.size() || !in.read(reinterpret_cast<char*>(head.data()), head.size())) return std::nullopt;
+    const std::uint32_t count = head[80] | head[81] << 8 | head[82] << 16 | std::uint32_t{head[83]} << 24;
+    if (size != 84 + 50 * std::uintmax_t{count}) return std::nullopt;
+    return count;
+}
+
+void check_binary_stl(std::istream& in, std::uint32_t count, const std::string& file) {
+    std::array<unsigned char, 50> record{};
+    for (std::uint32_t t = 0; t < count; ++t) {
+        if (!in.read(reinterpret_cast<char*>(record.data()), record.size()))
+            throw ParseError(file, 0, "read error in triangle " + std::to_string(t));
+        for (std::size_t c = 3; c < 12; ++c) {
+            const std::uint32_t bits = record[4 * c] | record[4 * c + 1] << 8 | record[4 * c + 2] << 16 |
+                                       std::uint32_t{record[4 * c + 3]} << 24;
+            if ((bits & 0x7f800000u) == 0x7f800000u)  // exponent all ones: infinity or NaN
+                throw ParseError(file, 0, "triangle " + std::to_string(t) + " has a non-finite coordinate");
+        }
+    }
+}
+
+}  // namespace
+
+MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ParseError(path.string(), 0, "cannot open");
+    if (extension == "stl") {
+        if (const auto count = binary_stl_triangles(in, std::filesystem::file_size(path))) {
+            check_binary_stl(in, *count, path.string());
+            return {};
+        }
+        in.clear();
+        in.seekg(0);
+        TokenLines lines(in, path.string(), false);
+        check_ascii_stl(lines);
+        return {};
+    }
+    if (extension == "ply") {
+        TokenLines lines(in, path.string(), false);
+        return check_ply(lines);
+    }
+    TokenLines lines(in, path.string(), true);
+    return extension == "obj" ? check_obj(lines) : check_off(lines);
+}
+
+}  // namespace rast::detail

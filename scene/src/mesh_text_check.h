@@ -1,0 +1,28 @@
+// rast — a validating pass over text mesh files, before OpenMesh reads them: OpenMesh reports no line
+// numbers, reads numbers leniently and skips faces it cannot use.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace rast::detail {
+
+struct MeshFileCheck {
+    // For OBJ, OFF and ASCII PLY, the faces OpenMesh must produce: the sum of (corners - 2) over the
+    // polygons, which it triangulates as a fan. Then a face it dropped is noticed.
+    std::optional<std::size_t> triangles;
+    // For ASCII OFF, the file rewritten for OpenMesh's OFF reader, which reads nothing from a file with
+    // comments or with the counts on the header line (and still reports success).
+    std::optional<std::string> off_for_openmesh;
+};
+
+// For OBJ, OFF, ASCII PLY and ASCII STL (extension lower case, without the dot): throws ParseError with
+// file and line for a malformed or non-finite number, a wrong count of values, a face index out of range or
+// repeated within a face, or a file that ends early. For binary STL: a non-finite coordinate (OpenMesh
+// merges STL corners by position, and NaN would merge with anything). Other binary files are left to
+// OpenMesh and the finite check after it.
+MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension);
+
+}  // namespace rast::detail

@@ -1,0 +1,209 @@
+#include "rast/mesh.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <vector>
+
+namespace rast {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeshFiles : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("rast-mesh-" + std::to_string(::getpid()) + "-" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    fs::path write(const std::string& name, const std::string& bytes) const {
+        const fs::path p = dir_ / name;
+        std::ofstream(p, std::ios::binary) << bytes;
+        return p;
+    }
+    // The what() of the ParseError that reading the file throws, with the directory taken out.
+    std::string error_of(const std::string& name, const std::string& bytes) const {
+        try {
+            read_mesh(write(name, bytes));
+        } catch (const ParseError& e) {
+            std::string what = e.what();
+            const std::string prefix = (dir_ / "").string();
+            if (what.rfind(prefix, 0) == 0) what.erase(0, prefix.size());
+            return what;
+        }
+        return "";
+    }
+    fs::path dir_;
+};
+
+// A unit cube: 8 corners, 6 quads wound counter-clockwise seen from outside.
+const char* const kCubeObj =
+    "# cube\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf 4 1 5 8\n";
+
+// Twice the signed area of every face, summed as vectors: zero exactly for a closed surface.
+Vec3 summed_area_vectors(const Mesh& m) {
+    Vec3 sum;
+    for (const auto& f : m.faces)
+        sum = sum + cross(m.positions[f[1]] - m.positions[f[0]], m.positions[f[2]] - m.positions[f[0]]);
+    return sum;
+}
+
+void expect_unit_cube(const Mesh& m) {
+    EXPECT_EQ(m.positions.size(), 8u);
+    EXPECT_EQ(m.faces.size(), 12u);  // 6 quads, triangulated
+    EXPECT_TRUE(m.closed);
+    EXPECT_EQ(summed_area_vectors(m), (Vec3{0, 0, 0}));
+    for (const Vec3& p : m.positions)
+        for (double c : {p.x, p.y, p.z}) EXPECT_TRUE(c == 0 || c == 1);
+}
+
+TEST_F(MeshFiles, ReadsObjTriangulatingQuads) { expect_unit_cube(read_mesh(write("cube.obj", kCubeObj))); }
+
+TEST_F(MeshFiles, ExtensionIsCaseInsensitive) { expect_unit_cube(read_mesh(write("CUBE.OBJ", kCubeObj))); }
+
+TEST_F(MeshFiles, ObjNegativeIndicesAndSlashes) {
+    const Mesh m = read_mesh(write("t.obj", "v 0 0 0\nv 1 0 0\nvt 0 0\nv 0 1 0\nf -3/1 -2/1/1 3//1\n"));
+    ASSERT_EQ(m.faces.size(), 1u);
+    EXPECT_FALSE(m.closed);
+    const auto& f = m.faces[0];
+    EXPECT_EQ(m.positions[f[0]], (Vec3{0, 0, 0}));
+    EXPECT_EQ(m.positions[f[1]], (Vec3{1, 0, 0}));
+    EXPECT_EQ(m.positions[f[2]], (Vec3{0, 1, 0}));
+}
+
+TEST_F(MeshFiles, CoordinatesAreFloat32) {
+    const Mesh m = read_mesh(write("t.obj", "v 0.1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    EXPECT_EQ(m.positions.at(0).x, static_cast<double>(0.1f));
+}
+
+TEST_F(MeshFiles, ReadsOff) {
+    expect_unit_cube(read_mesh(write("cube.off",
+                                     "OFF\n# a cube\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                                     "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 3 0 4 7\n")));
+}
+
+TEST_F(MeshFiles, ReadsAsciiPly) {
+    expect_unit_cube(read_mesh(write("cube.ply",
+                                     "ply\nformat ascii 1.0\ncomment a cube\nelement vertex 8\n"
+                                     "property float x\nproperty float y\nproperty float z\n"
+                                     "element face 6\nproperty list uchar int vertex_indices\nend_header\n"
+                                     "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                                     "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 3 0 4 7\n")));
+}
+
+// The cube as 12 triangles (corner indices into the unit cube above, 0-based).
+const int kCubeTriangles[12][3] = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                                   {2, 3, 7}, {2, 7, 6}, {1, 2, 6}, {1, 6, 5}, {3, 0, 4}, {3, 4, 7}};
+const float kCubeCorners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                  {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+
+TEST_F(MeshFiles, ReadsAsciiStlMergingCorners) {
+    std::string stl = "solid cube\n";
+    for (const auto& t : kCubeTriangles) {
+        stl += "facet normal 0 0 0\nouter loop\n";
+        for (int c : t)
+            stl += "vertex " + std::to_string(kCubeCorners[c][0]) + " " + std::to_string(kCubeCorners[c][1]) + " " +
+                   std::to_string(kCubeCorners[c][2]) + "\n";
+        stl += "endloop\nendfacet\n";
+    }
+    expect_unit_cube(read_mesh(write("cube.stl", stl + "endsolid cube\n")));
+}
+
+TEST_F(MeshFiles, ReadsBinaryStlEvenWithASolidHeader) {
+    std::string stl(80, ' ');
+    stl.replace(0, 5, "solid");
+    const std::uint32_t count = 12;
+    stl.append(reinterpret_cast<const char*>(&count), 4);  // little endian on the machines we build for
+    for (const auto& t : kCubeTriangles) {
+        stl.append(12, '\0');  // normal
+        for (int c : t) stl.append(reinterpret_cast<const char*>(kCubeCorners[c]), 12);
+        stl.append(2, '\0');  // attribute byte count
+    }
+    expect_unit_cube(read_mesh(write("cube.stl", stl)));
+}
+
+TEST_F(MeshFiles, BinaryStlWithNanIsRejected) {
+    std::string stl(80, ' ');
+    const std::uint32_t count = 1;
+    stl.append(reinterpret_cast<const char*>(&count), 4);
+    const float tri[12] = {0, 0, 0, 0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 0};
+    stl.append(reinterpret_cast<const char*>(tri), sizeof tri);
+    stl.append(2, '\0');
+    EXPECT_EQ(error_of("nan.stl", stl), "nan.stl: triangle 0 has a non-finite coordinate");
+}
+
+TEST_F(MeshFiles, RejectsUnknownExtensionMissingFileAndNoFaces) {
+    EXPECT_EQ(error_of("cube.xyz", kCubeObj), "cube.xyz: unknown mesh extension '.xyz' (expected .obj, .off, .ply or .stl)");
+    EXPECT_EQ(error_of("noext", kCubeObj), "noext: unknown mesh extension '' (expected .obj, .off, .ply or .stl)");
+    try {
+        read_mesh(dir_ / "absent.obj");
+        FAIL() << "no error";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.message, "cannot open: No such file or directory");
+    }
+    EXPECT_EQ(error_of("points.obj", "v 0 0 0\nv 1 0 0\n"), "points.obj: the mesh has no faces");
+}
+
+TEST_F(MeshFiles, RejectsMalformedObjWithLine) {
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nf 1 2 3\n"), "a.obj:3: NaN is not allowed: 'nan'");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 1e999\n"), "a.obj:2: number '1e999' overflows to infinity");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0x\n"), "a.obj:2: bad number '0x': trailing characters 'x'");
+    EXPECT_EQ(error_of("a.obj", "v 0 0\n"), "a.obj:1: 'v' expects at least 3 numbers (x y z), got 2 values");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n"),
+              "a.obj:5: vertex index 4 is out of range (3 vertices)");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"),
+              "a.obj:4: vertex index 0 is out of range (3 vertices)");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n"),
+              "a.obj:4: vertex index -4 is out of range (3 vertices)");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -3\n"), "a.obj:4: the face uses vertex -3 twice");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n"), "a.obj:4: 'f' expects at least 3 vertices, got 2 values");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x/1\n"), "a.obj:4: expected an integer, got 'x'");
+}
+
+TEST_F(MeshFiles, RejectsMalformedOffWithLine) {
+    EXPECT_EQ(error_of("a.off", "PFF\n"), "a.off:1: expected an OFF header, got 'PFF'");
+    EXPECT_EQ(error_of("a.off", "OFF\n3 1\n"), "a.off:2: expected the counts 'vertices faces edges', got 2 values");
+    EXPECT_EQ(error_of("a.off", "OFF\n3 1 0\n0 0 0\n1 0 inf\n"), "a.off:4: infinity is not allowed: 'inf'");
+    EXPECT_EQ(error_of("a.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
+              "a.off:5: vertex index 3 is out of range (3 vertices)");
+    EXPECT_EQ(error_of("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n"),
+              "a.off:6: the face lists 4 vertices but gives 3 values");
+    EXPECT_EQ(error_of("a.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "a.off:6: the file ends before face 1 of 2");
+}
+
+TEST_F(MeshFiles, RejectsMalformedPlyWithLine) {
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    EXPECT_EQ(error_of("a.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+              "a.ply:13: vertex index 7 is out of range (3 vertices)");
+    EXPECT_EQ(error_of("a.ply", header + "0 0 0\n1 0 0 5\n0 1 0\n3 0 1 2\n"),
+              "a.ply:11: too many values for element 'vertex': 4 values, expected 3");
+    EXPECT_EQ(error_of("a.ply", header + "0 0 0\n1 0\n"), "a.ply:11: too few values for element 'vertex': 2 values");
+    EXPECT_EQ(error_of("a.ply", header + "0 0 0\n1 0 nan\n"), "a.ply:11: NaN is not allowed: 'nan'");
+    EXPECT_EQ(error_of("a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nwhat\n"),
+              "a.ply:5: unknown PLY header keyword 'what'");
+}
+
+TEST_F(MeshFiles, RejectsMalformedAsciiStlWithLine) {
+    EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"),
+              "a.stl:6: a facet has 2 vertices; STL facets are triangles");
+    EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0,5\n"),
+              "a.stl:5: bad number '0,5': trailing characters ',5'");
+    EXPECT_EQ(error_of("a.stl", "not an stl at all\n"), "a.stl:1: expected 'solid' (and the size does not fit a binary STL)");
+}
+
+}  // namespace
+}  // namespace rast
