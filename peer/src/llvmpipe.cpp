@@ -92,7 +92,9 @@ struct Llvmpipe::State {
     int threads = 0;
     std::string renderer;
     GLuint vertex_buffer = 0;
-    GLint max_size = 0;  // the largest viewport side OSMesa and GL both accept
+    // The GL viewport: the square [-half, half]^2 with half a power of two, as large as GL allows.
+    int half = 0;
+    int max_size = 0;  // the largest framebuffer side: OSMesa's limit, and at most `half`
     std::vector<std::uint8_t> colour;  // the OSMesa colour buffer, RGBA8
     Viewport viewport{1, 1};
     GLsizei vertices = 0;
@@ -144,11 +146,15 @@ Llvmpipe::Llvmpipe(int threads) : state_(std::make_unique<State>()) {
     if (depth_bits != 24) {
         fail("expected a 24-bit depth buffer, got " + std::to_string(depth_bits) + " bits");
     }
-    GLint osmesa_w = 0, osmesa_h = 0, gl_dims[2] = {0, 0};
+    GLint osmesa_w = 0, osmesa_h = 0, dims[2] = {0, 0}, bounds[2] = {0, 0};
     OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &osmesa_w);
     OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &osmesa_h);
-    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, gl_dims);
-    state_->max_size = std::min({osmesa_w, osmesa_h, gl_dims[0], gl_dims[1]});
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+    glGetIntegerv(GL_VIEWPORT_BOUNDS_RANGE, bounds);
+    const GLint reach = std::min({dims[0] / 2, dims[1] / 2, -bounds[0], bounds[1]});
+    if (reach < 1) fail("no usable viewport range");
+    state_->half = static_cast<int>(std::bit_floor(static_cast<unsigned>(reach)));
+    state_->max_size = std::min({osmesa_w, osmesa_h, state_->half});
 
     glDisable(GL_DITHER);
     glShadeModel(GL_FLAT);
@@ -179,9 +185,7 @@ void Llvmpipe::load(const Scene& scene) {
         throw std::invalid_argument("llvmpipe: viewport " + std::to_string(vp.width) + "x" +
                                     std::to_string(vp.height) + " is empty");
     }
-    // The GL viewport side S is a power of two (see the header); it must fit GL's limit too.
-    const int side = static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(vp.width, vp.height))));
-    if (side > state_->max_size) {
+    if (std::max(vp.width, vp.height) > state_->max_size) {
         throw std::invalid_argument("llvmpipe: viewport " + std::to_string(vp.width) + "x" +
                                     std::to_string(vp.height) + " exceeds llvmpipe's " +
                                     std::to_string(state_->max_size) + " pixels");
@@ -214,11 +218,14 @@ void Llvmpipe::load(const Scene& scene) {
     state_->depth_map = depth_map;
     state_->colour.assign(4 * static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height), 0);
     state_->make_current();
-    glViewport(0, 0, side, side);
+    // Viewport and projection span the same power-of-two square centred on the origin: x and y are
+    // only ever multiplied by powers of two, never offset. near = 1, far = -1 makes the projection's
+    // z row the identity: the vertex z is already NDC.
+    const int half = state_->half;
+    glViewport(-half, -half, 2 * half, 2 * half);
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
-    // near = 1, far = -1 makes the projection's z row the identity: the vertex z is already NDC.
-    glOrtho(0, side, 0, side, 1, -1);
+    glOrtho(-half, half, -half, half, 1, -1);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(GlVertex)),

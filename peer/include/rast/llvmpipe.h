@@ -6,11 +6,12 @@
 // (shared/DESIGN.md):
 //   - y is mirrored (y -> H - y): llvmpipe's tie rule is left + bottom in GL's y-up window coordinates,
 //     which under the mirror is exactly our left + top rule. Rows are mirrored back on readback.
-//   - x and the mirrored y reach llvmpipe's window coordinates unchanged: an orthographic projection
-//     and a viewport of the same power-of-two size S >= max(W, H) make every scale a power of two, so
-//     a coordinate that is exact as a float (any 1/256-grid value below 2^15) stays bit-exact.
-//     Coordinates are rounded to float, as in any GL; parts of a triangle outside [0, S]^2 (in
-//     mirrored coordinates) are cut off by GL's clipper, which introduces off-grid vertices.
+//   - x and the mirrored y reach llvmpipe's window coordinates unchanged: the GL viewport is the
+//     largest power-of-two square GL allows, [-8192, 8192]^2 here, centred on the origin, under an
+//     orthographic projection of the same extent, so coordinates are only ever scaled by powers of
+//     two: a coordinate that is exact as a float (any 1/256-grid value below 2^15) stays bit-exact.
+//     Coordinates are rounded to float, as in any GL; GL's clipper cuts off parts of a triangle
+//     outside that square, which introduces off-grid vertices. The framebuffer lies in [0, 8192]^2.
 //   - z is mapped monotonically (affine, then rounded to float) from the scene's [z_min, z_max] onto
 //     the middle half of the depth range, so no vertex comes near the near or far plane.
 //   - Depth buffer: 24-bit fixed point (OSMesa's window buffer offers no float depth), GL_LESS.
