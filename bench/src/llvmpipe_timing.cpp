@@ -27,8 +27,9 @@ std::string measure(const Scene& scene, int threads, std::size_t iterations) {
             llvmpipe.draw();
             s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
-        return "T" + std::string(reinterpret_cast<const char*>(seconds.data()),
-                                 seconds.size() * sizeof(double));
+        std::string reply(1 + seconds.size() * sizeof(double), 'T');
+        std::memcpy(reply.data() + 1, seconds.data(), seconds.size() * sizeof(double));
+        return reply;
     } catch (const std::exception& e) {
         return std::string("E") + e.what();
     }
