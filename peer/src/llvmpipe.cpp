@@ -102,16 +102,17 @@ struct Llvmpipe::State {
 
     ~State() {
         if (!context) return;
-        if (vertex_buffer != 0 && OSMesaMakeCurrent(context, colour.data(), GL_UNSIGNED_BYTE,
-                                                    viewport.width, viewport.height)) {
-            glDeleteBuffers(1, &vertex_buffer);
-        }
+        if (vertex_buffer != 0 && bind()) glDeleteBuffers(1, &vertex_buffer);
         OSMesaDestroyContext(context);
     }
 
+    bool bind() {
+        return OSMesaMakeCurrent(context, colour.data(), GL_UNSIGNED_BYTE, viewport.width,
+                                 viewport.height);
+    }
+
     void make_current() {
-        if (!OSMesaMakeCurrent(context, colour.data(), GL_UNSIGNED_BYTE, viewport.width,
-                               viewport.height)) {
+        if (!bind()) {
             fail("OSMesaMakeCurrent failed for a " + std::to_string(viewport.width) + "x" +
                  std::to_string(viewport.height) + " buffer");
         }
