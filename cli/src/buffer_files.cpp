@@ -1,0 +1,40 @@
+#include "buffer_files.h"
+
+#include <cassert>
+#include <charconv>
+#include <cmath>
+
+namespace rast::cli {
+namespace {
+
+template <class Cell>
+std::string format_grid(const Framebuffer& fb, Cell cell) {
+    assert(fb.samples == 1);
+    std::string out;
+    char buffer[32];
+    for (int j = fb.viewport.height - 1; j >= 0; --j) {
+        for (int i = 0; i < fb.viewport.width; ++i) {
+            if (i > 0) out += ' ';
+            out.append(buffer, cell(fb.index(i, j), buffer));
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string format_ids(const Framebuffer& fb) {
+    return format_grid(fb, [&](std::size_t k, char* buf) {
+        return static_cast<std::size_t>(std::to_chars(buf, buf + 32, fb.ids[k]).ptr - buf);
+    });
+}
+
+std::string format_depth(const Framebuffer& fb) {
+    return format_grid(fb, [&](std::size_t k, char* buf) {
+        // Shortest round-trip decimal; std::to_chars writes "inf" for an empty pixel.
+        return static_cast<std::size_t>(std::to_chars(buf, buf + 32, fb.depth[k]).ptr - buf);
+    });
+}
+
+}  // namespace rast::cli

@@ -1,0 +1,11 @@
+// rast — the subcommands. Each registers its options and runs when chosen; errors are exceptions, and a
+// command that finds a failure (a property, a check) sets the exit status instead.
+#pragma once
+
+#include <CLI/App.hpp>
+
+namespace rast::cli {
+
+void add_render_command(CLI::App& app);
+
+}  // namespace rast::cli

@@ -1,0 +1,42 @@
+#include "engine_choice.h"
+
+#include <CLI/CLI.hpp>
+
+namespace rast::cli {
+
+fast::Options EngineChoice::fast_options() const {
+    // The option's validator has already accepted the name.
+    return {.precision = *fast::parse_precision(precision), .threads = threads};
+}
+
+std::string EngineChoice::describe() const {
+    if (is_reference()) return "reference (exact)";
+    return "fast " + precision + ", " + (threads == 0 ? std::string("all") : std::to_string(threads)) +
+           (threads == 1 ? " thread" : " threads");
+}
+
+void add_engine_options(CLI::App& command, EngineChoice& choice) {
+    command.add_option("--engine", choice.engine, "Rasterizer: the exact reference or the fast path")
+        ->check(CLI::IsMember({"reference", "fast"}))
+        ->capture_default_str();
+    command
+        .add_option("--precision", choice.precision,
+                    "Fast path precision: fixed4|fixed8|fixed16 (vertices snapped to 1/2^N pixel, exact integer "
+                    "edge functions) or float32|float64 (floating-point edge functions)")
+        ->check([](const std::string& s) {
+            return fast::parse_precision(s) ? std::string{}
+                                            : "unknown precision '" + s +
+                                                  "' (expected fixed4, fixed8, fixed16, float32 or float64)";
+        })
+        ->capture_default_str();
+    command.add_option("--threads", choice.threads, "Fast path threads (0: all cores); the result is the same")
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
+}
+
+Framebuffer render(const Scene& scene, const EngineChoice& choice, reference::Stats* stats) {
+    if (choice.is_reference()) return reference::render(scene, stats);
+    return fast::render(scene, choice.fast_options());
+}
+
+}  // namespace rast::cli

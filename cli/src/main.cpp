@@ -1,0 +1,26 @@
+// rast — the command line: render, and the verification commands built on the two rasterizers.
+#include "commands.h"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "rast: a verified triangle rasterizer. An exact reference (CGAL orientation predicates, rational\n"
+        "depth) and a fast path (fixed point or float; tiles, SIMD, threads), held against each other.\n"
+        "Screen space is y up, pixel centres at (i + 1/2, j + 1/2), the top-left tie rule, smaller z nearer."};
+    app.require_subcommand(1);
+    int status = 0;
+    rast::cli::add_render_command(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const std::exception& e) {
+        std::cerr << "rast: error: " << e.what() << '\n';
+        return 1;
+    }
+    return status;
+}

@@ -1,0 +1,71 @@
+#include "png_image.h"
+
+#include <rast/atomic_file.h>
+
+#include <png.h>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace rast::cli {
+
+std::array<std::uint8_t, 3> id_colour(std::int32_t id) {
+    if (id < 0) return {16, 16, 24};
+    // Golden-ratio hue steps keep neighbouring ids apart; fixed saturation and value keep them readable.
+    const double hue = std::fmod(0.13 + 0.6180339887498949 * id, 1.0) * 6.0;
+    const double s = 0.65, v = 0.95;
+    const int sector = static_cast<int>(hue);
+    const double f = hue - sector;
+    const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+    std::array<double, 3> c;
+    switch (sector % 6) {
+        case 0: c = {v, t, p}; break;
+        case 1: c = {q, v, p}; break;
+        case 2: c = {p, v, t}; break;
+        case 3: c = {p, q, v}; break;
+        case 4: c = {t, p, v}; break;
+        default: c = {v, p, q}; break;
+    }
+    return {static_cast<std::uint8_t>(c[0] * 255 + 0.5), static_cast<std::uint8_t>(c[1] * 255 + 0.5),
+            static_cast<std::uint8_t>(c[2] * 255 + 0.5)};
+}
+
+Image resolve_ids(const Framebuffer& fb) {
+    const int w = fb.viewport.width, h = fb.viewport.height;
+    Image image(w, h);
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i) {
+            std::array<int, 3> sum{};
+            for (int s = 0; s < fb.samples; ++s) {
+                const auto c = id_colour(fb.id(i, j, s));
+                for (int k = 0; k < 3; ++k) sum[k] += c[k];
+            }
+            std::uint8_t* out = image.at(i, h - 1 - j);
+            for (int k = 0; k < 3; ++k)
+                out[k] = static_cast<std::uint8_t>((sum[k] + fb.samples / 2) / fb.samples);
+        }
+    }
+    return image;
+}
+
+void write_png(const std::filesystem::path& path, const Image& image) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = static_cast<png_uint_32>(image.width);
+    png.height = static_cast<png_uint_32>(image.height);
+    png.format = PNG_FORMAT_RGB;
+    const png_int_32 stride = image.width * 3;
+    // First call sizes the buffer, second fills it: the file is then written in one atomic step.
+    png_alloc_size_t size = 0;
+    if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), stride, nullptr))
+        throw std::runtime_error(path.string() + ": cannot encode PNG: " + png.message);
+    std::string bytes(size, '\0');
+    if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgb.data(), stride, nullptr))
+        throw std::runtime_error(path.string() + ": cannot encode PNG: " + png.message);
+    bytes.resize(size);
+    write_file_atomic(path, bytes);
+}
+
+}  // namespace rast::cli

@@ -1,0 +1,34 @@
+// rast — pictures of a framebuffer: one colour per triangle id, samples resolved by averaging.
+#pragma once
+
+#include <rast/scene.h>
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace rast::cli {
+
+// 8-bit RGB, top row first, as an image is written.
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgb;
+
+    Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}
+    std::uint8_t* at(int x, int row) { return &rgb[(static_cast<std::size_t>(row) * width + x) * 3]; }
+};
+
+// A stable, well-separated colour for a triangle id; the background (-1) is near-black.
+std::array<std::uint8_t, 3> id_colour(std::int32_t id);
+
+// The framebuffer as a picture: each pixel the average of its samples' id colours, rows flipped so the
+// top row (j = H - 1) comes first.
+Image resolve_ids(const Framebuffer& fb);
+
+// Encodes as PNG and writes the file atomically.
+void write_png(const std::filesystem::path& path, const Image& image);
+
+}  // namespace rast::cli

@@ -1,0 +1,138 @@
+// rast render: rasterize a scene with one engine and write what the user asks for.
+#include "buffer_files.h"
+#include "commands.h"
+#include "default_scene.h"
+#include "engine_choice.h"
+#include "png_image.h"
+#include "scene_input.h"
+
+#include <rast/atomic_file.h>
+#include <rast/reference.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace rast::cli {
+namespace {
+
+struct RenderOptions {
+    std::string scene_path;
+    bool use_default = false;
+    EngineChoice engine;
+    MeshView view;
+    std::optional<int> samples;
+    std::string image_out;
+    std::string coverage = "samples";
+    std::string ids_out, depth_out, coverage_out;
+};
+
+std::string percent(std::uint64_t part, std::uint64_t whole) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g%%", whole == 0 ? 0.0 : 100.0 * double(part) / double(whole));
+    return text;
+}
+
+// The exact area coverage as a grey picture (an area above 1, where triangles overlap, shows white).
+Image area_image(Viewport vp, const std::vector<reference::Rational>& area) {
+    Image image(vp.width, vp.height);
+    for (int j = 0; j < vp.height; ++j) {
+        for (int i = 0; i < vp.width; ++i) {
+            const double a = std::min(1.0, area[std::size_t(j) * vp.width + i].convert_to<double>());
+            std::uint8_t* out = image.at(i, vp.height - 1 - j);
+            std::fill(out, out + 3, static_cast<std::uint8_t>(a * 255 + 0.5));
+        }
+    }
+    return image;
+}
+
+// shared/DESIGN.md: p/q in lowest terms, an integer when q = 1, top row first.
+std::string format_area(Viewport vp, const std::vector<reference::Rational>& area) {
+    std::string out;
+    for (int j = vp.height - 1; j >= 0; --j) {
+        for (int i = 0; i < vp.width; ++i) {
+            if (i > 0) out += ' ';
+            out += area[std::size_t(j) * vp.width + i].str();
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+void run_render(const RenderOptions& o) {
+    Scene scene = o.use_default ? default_scene() : load_scene(o.scene_path, o.view);
+    if (o.samples) scene.samples = *o.samples;
+    const std::string name = o.use_default ? "default scene" : o.scene_path;
+
+    reference::Stats stats;
+    const auto start = std::chrono::steady_clock::now();
+    const Framebuffer fb = render(scene, o.engine, &stats);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+    std::size_t covered = 0;
+    for (auto id : fb.ids) covered += id != Framebuffer::kNoTriangle;
+    std::cout << "scene:   " << name << ": " << scene.triangles.size() << " triangles, " << scene.viewport.width
+              << "x" << scene.viewport.height << ", " << scene.samples << " sample(s) per pixel\n"
+              << "engine:  " << o.engine.describe() << ", " << ms << " ms\n"
+              << "covered: " << covered << " of " << fb.ids.size() << " samples\n";
+    if (o.engine.is_reference()) {
+        std::cout << "exact:   " << stats.orientation_exact << " of " << stats.orientation_tests
+                  << " orientation tests (" << percent(stats.orientation_exact, stats.orientation_tests)
+                  << "), " << stats.depth_exact << " of " << stats.depth_tests << " depth comparisons ("
+                  << percent(stats.depth_exact, stats.depth_tests) << ") needed exact arithmetic\n";
+    }
+
+    const bool want_area = o.coverage == "area" || !o.coverage_out.empty();
+    const auto area = want_area ? reference::coverage_area(scene) : std::vector<reference::Rational>{};
+    if (!o.image_out.empty()) {
+        write_png(o.image_out, o.coverage == "area" ? area_image(scene.viewport, area) : resolve_ids(fb));
+        std::cout << "wrote " << o.image_out << '\n';
+    }
+    if (!o.ids_out.empty() || !o.depth_out.empty()) {
+        // The id and depth files describe pixel centres: with several samples, render the centres once more.
+        Scene centres = scene;
+        centres.samples = 1;
+        const Framebuffer at_centres = scene.samples == 1 ? fb : render(centres, o.engine);
+        if (!o.ids_out.empty()) write_file_atomic(o.ids_out, format_ids(at_centres));
+        if (!o.depth_out.empty()) write_file_atomic(o.depth_out, format_depth(at_centres));
+    }
+    if (!o.coverage_out.empty()) write_file_atomic(o.coverage_out, format_area(scene.viewport, area));
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+    auto o = std::make_shared<RenderOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Rasterize a scene (.tri, or a mesh: OBJ, OFF, PLY, STL) and write a picture and buffers");
+    auto* scene = cmd->add_option("SCENE", o->scene_path, "A .tri scene or a mesh file")->check(CLI::ExistingFile);
+    auto* def = cmd->add_flag("--default", o->use_default, "Render the built-in default scene instead");
+    scene->excludes(def);
+    add_engine_options(*cmd, o->engine);
+    cmd->add_option("--samples", o->samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+    cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour");
+    cmd->add_option("--coverage", o->coverage,
+                    "What the picture shows: 'samples' (ids, samples averaged) or 'area' (exact area coverage)")
+        ->check(CLI::IsMember({"samples", "area"}))
+        ->capture_default_str();
+    cmd->add_option("--ids-out", o->ids_out,
+                    "Write the id buffer: H lines of W ids of the triangle owning each pixel centre, or -1");
+    cmd->add_option("--depth-out", o->depth_out,
+                    "Write the depth buffer: H lines of W depths at pixel centres (inf where empty)");
+    cmd->add_option("--coverage-out", o->coverage_out,
+                    "Write the exact covered area of every pixel: H lines of W rationals p/q, depth ignored");
+    add_mesh_view_options(*cmd, o->view);
+    cmd->callback([o, scene, def] {
+        if (scene->count() == 0 && def->count() == 0) throw CLI::RequiredError("SCENE or --default");
+        run_render(*o);
+    });
+}
+
+}  // namespace rast::cli

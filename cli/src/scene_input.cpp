@@ -1,0 +1,74 @@
+#include "scene_input.h"
+
+#include <rast/mesh.h>
+#include <rast/tri_format.h>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace rast::cli {
+namespace {
+
+// "x,y,z" into three finite doubles, for CLI11.
+void add_vector_option(CLI::App& command, const std::string& name, std::optional<Vec3>& target,
+                       const std::string& help) {
+    command
+        .add_option_function<std::vector<double>>(
+            name, [&target](const std::vector<double>& v) { target = Vec3{v[0], v[1], v[2]}; }, help)
+        ->delimiter(',')
+        ->expected(3)
+        ->type_name("X,Y,Z")
+        ->check(CLI::Number);
+}
+
+}  // namespace
+
+void add_mesh_view_options(CLI::App& command, MeshView& view) {
+    const std::string group = "Meshes (OBJ, OFF, PLY, STL)";
+    command.add_option("--width", view.width, "Viewport width in pixels, for a mesh")
+        ->check(CLI::Range(1, 32768))
+        ->capture_default_str()
+        ->group(group);
+    command.add_option("--height", view.height, "Viewport height in pixels, for a mesh")
+        ->check(CLI::Range(1, 32768))
+        ->capture_default_str()
+        ->group(group);
+    add_vector_option(command, "--eye", view.eye, "Camera position (default: framed to fit the mesh)");
+    add_vector_option(command, "--target", view.target, "Point the camera looks at (default: the mesh's centre)");
+    add_vector_option(command, "--up", view.up, "Camera up direction (default: 0,1,0)");
+    command.add_option("--fov", view.fov_y_degrees, "Vertical field of view in degrees (default: 45)")
+        ->check(CLI::Range(1e-3, 179.0))
+        ->group(group);
+    command.add_option("--near", view.near_plane, "Near plane distance (default: framed)")
+        ->check(CLI::PositiveNumber)
+        ->group(group);
+    command.add_option("--far", view.far_plane, "Far plane distance (default: framed)")
+        ->check(CLI::PositiveNumber)
+        ->group(group);
+    for (auto* name : {"--eye", "--target", "--up"}) command.get_option(name)->group(group);
+}
+
+bool is_mesh_path(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl";
+}
+
+Scene load_scene(const std::string& path, const MeshView& view) {
+    if (!is_mesh_path(path)) return read_tri_file(path);
+    const Mesh mesh = read_mesh(path);
+    const Viewport vp{view.width, view.height};
+    Camera camera = frame(mesh, vp);
+    if (view.eye) camera.eye = *view.eye;
+    if (view.target) camera.target = *view.target;
+    if (view.up) camera.up = *view.up;
+    if (view.fov_y_degrees) camera.fov_y_degrees = *view.fov_y_degrees;
+    if (view.near_plane) camera.near_plane = *view.near_plane;
+    if (view.far_plane) camera.far_plane = *view.far_plane;
+    return project(mesh, camera, vp, 1);
+}
+
+}  // namespace rast::cli
