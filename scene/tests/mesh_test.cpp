@@ -103,6 +103,36 @@ TEST_F(MeshFiles, ReadsAsciiPly) {
                                      "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 3 0 4 7\n")));
 }
 
+TEST_F(MeshFiles, OffCountsOnTheHeaderLine) {
+    const Mesh m = read_mesh(write("t.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+    EXPECT_EQ(m.positions.size(), 3u);
+    EXPECT_EQ(m.faces.size(), 1u);
+}
+
+// A missing material and a non-manifold edge (three faces on edge 1-2) change no geometry: the mesh reads,
+// every face is kept, it is not closed, and OpenMesh's complaints do not reach stderr.
+TEST_F(MeshFiles, HarmlessOpenMeshComplaintsAreSilenced) {
+    ::testing::internal::CaptureStderr();
+    const Mesh m = read_mesh(write("nm.obj",
+                                   "mtllib absent.mtl\nusemtl none\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\n"
+                                   "f 1 2 3\nf 2 1 4\nf 1 2 5\n"));
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+    EXPECT_EQ(m.faces.size(), 3u);
+    EXPECT_FALSE(m.closed);
+}
+
+TEST_F(MeshFiles, BinaryPlyWithInfinityIsRejected) {
+    std::string ply =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const float corners[9] = {0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::infinity(), 0};
+    ply.append(reinterpret_cast<const char*>(corners), sizeof corners);
+    ply += '\3';
+    const std::int32_t face[3] = {0, 1, 2};
+    ply.append(reinterpret_cast<const char*>(face), sizeof face);
+    EXPECT_EQ(error_of("inf.ply", ply), "inf.ply: vertex 2 has a non-finite coordinate");
+}
+
 // The cube as 12 triangles (corner indices into the unit cube above, 0-based).
 const int kCubeTriangles[12][3] = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
                                    {2, 3, 7}, {2, 7, 6}, {1, 2, 6}, {1, 6, 5}, {3, 0, 4}, {3, 4, 7}};
