@@ -5,6 +5,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <random>
 
 namespace rast::reference {
 namespace {
@@ -77,6 +78,30 @@ TEST(Area, ZeroAreaAndOutsideTrianglesCoverNothing) {
 TEST(Area, OverlapsAreSummed) {
     const Triangle half = flat(0, 0, 1, 0, 0, 1);
     EXPECT_EQ(coverage_area(testing::scene(1, 1, {half, reversed(half)})), std::vector<Rational>{Rational(1)});
+}
+
+// Random triangles inside an 8x8 viewport: per pixel, the row sweep of coverage_area (which skips the
+// clipping of inner pixels) agrees with pixel_area, and the pixels add up to the triangle's area
+// |(b - a) x (c - a)| / 2.
+TEST(Area, PixelsSumToTheTriangleArea) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> inside(0, 8);
+    std::uniform_int_distribution<int> on_grid(0, 32);
+    for (int n = 0; n < 40; ++n) {
+        const auto coordinate = [&] { return n % 2 ? inside(rng) : on_grid(rng) / 4.0; };
+        const Triangle t = flat(coordinate(), coordinate(), coordinate(), coordinate(), coordinate(), coordinate());
+        const auto coverage = coverage_area(testing::scene(8, 8, {t}));
+        Rational sum(0);
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i) {
+                EXPECT_EQ(coverage[static_cast<std::size_t>(j * 8 + i)], pixel_area(t, i, j));
+                sum += coverage[static_cast<std::size_t>(j * 8 + i)];
+            }
+        const Rational ax(t.v[0].x), ay(t.v[0].y);
+        const Rational cross = (Rational(t.v[1].x) - ax) * (Rational(t.v[2].y) - ay) -
+                               (Rational(t.v[2].x) - ax) * (Rational(t.v[1].y) - ay);
+        EXPECT_EQ(sum, abs(cross) / 2);
+    }
 }
 
 }  // namespace
