@@ -108,11 +108,8 @@ enum class TileClass { reject, accept, partial };
 // extremes over the samples' bounding rectangle are at corners chosen by the signs of a and b.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
     if (t.path != Path::fixed) return TileClass::partial;
-    const auto fixed = [&c](int pixel, double offset) {
-        return (std::int64_t{pixel} << c.bits) + static_cast<std::int64_t>(std::ldexp(offset, c.bits));
-    };
-    const std::int64_t x_lo = fixed(i0, c.ox_min), x_hi = fixed(i1, c.ox_max);
-    const std::int64_t y_lo = fixed(j0, c.oy_min), y_hi = fixed(j1, c.oy_max);
+    const std::int64_t x_lo = (std::int64_t{i0} << c.bits) + c.sx_min, x_hi = (std::int64_t{i1} << c.bits) + c.sx_max;
+    const std::int64_t y_lo = (std::int64_t{j0} << c.bits) + c.sy_min, y_hi = (std::int64_t{j1} << c.bits) + c.sy_max;
     bool all_inside = true;
     for (const FixedEdge& f : t.fixed) {
         const std::int64_t lowest = f.a * (f.a >= 0 ? x_lo : x_hi) + f.b * (f.b >= 0 ? y_lo : y_hi) + f.c;

@@ -30,12 +30,14 @@ struct Context {
     std::vector<SamplePoint> offsets;         // per sample, inside the pixel
     std::vector<std::int64_t> sx, sy;         // the offsets in fixed units
     double ox_min, ox_max, oy_min, oy_max;    // their extent
+    std::int64_t sx_min, sx_max, sy_min, sy_max;  // and in fixed units
+    double coordinate_limit;                  // kFixedRange in pixels
     bool fixed_fits;                          // the viewport itself is inside kFixedRange
 };
 
 template <Fault F>
 Context make_context(Viewport vp, int samples, Precision precision) {
-    Context c{vp, precision, subpixel_bits(precision), {}, {}, {}, 1, 0, 1, 0, false};
+    Context c{vp, precision, subpixel_bits(precision), {}, {}, {}, 1, 0, 1, 0, 0, 0, 0, 0, 0, false};
     for (SamplePoint o : sample_pattern(samples)) {
         if constexpr (F == Fault::integer_sample_positions) o = {o.x - 0.5, o.y - 0.5};
         c.offsets.push_back(o);
@@ -47,8 +49,12 @@ Context make_context(Viewport vp, int samples, Precision precision) {
         c.oy_min = std::min(c.oy_min, o.y);
         c.oy_max = std::max(c.oy_max, o.y);
     }
-    const double limit = std::ldexp(kFixedRange, -c.bits);
-    c.fixed_fits = vp.width + 1 <= limit && vp.height + 1 <= limit;
+    c.sx_min = *std::min_element(c.sx.begin(), c.sx.end());
+    c.sx_max = *std::max_element(c.sx.begin(), c.sx.end());
+    c.sy_min = *std::min_element(c.sy.begin(), c.sy.end());
+    c.sy_max = *std::max_element(c.sy.begin(), c.sy.end());
+    c.coordinate_limit = std::ldexp(kFixedRange, -c.bits);
+    c.fixed_fits = vp.width + 1 <= c.coordinate_limit && vp.height + 1 <= c.coordinate_limit;
     return c;
 }
 
@@ -150,7 +156,7 @@ Setup setup_triangle(const Triangle& t, const Context& c) {
                         single ? double(float(by) - float(ay)) : by - ay, inclusive[k]};
         }
     } else {
-        const double limit = std::ldexp(kFixedRange, -c.bits);
+        const double limit = c.coordinate_limit;
         const bool fits = c.fixed_fits && std::all_of(s.v.begin(), s.v.end(), [limit](const Vertex& p) {
                               return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
                           });
@@ -159,7 +165,8 @@ Setup setup_triangle(const Triangle& t, const Context& c) {
             for (int k = 0; k < 3; ++k) {
                 const Vertex& p = s.v[k];
                 const Vertex& q = s.v[(k + 1) % 3];
-                const auto fixed = [&c](double x) { return static_cast<std::int64_t>(std::ldexp(x, c.bits)); };
+                const double scale = static_cast<double>(std::int64_t{1} << c.bits);
+                const auto fixed = [scale](double x) { return static_cast<std::int64_t>(x * scale); };
                 const std::int64_t ax = fixed(p.x), ay = fixed(p.y);
                 const std::int64_t a = ay - fixed(q.y), b = fixed(q.x) - ax;
                 // E >= 0 on an owning edge, E > 0 (E - 1 >= 0 for integers) on the others.

@@ -4,6 +4,7 @@
 #include <rast/fast.h>
 
 #include <cmath>
+#include <cstdint>
 
 namespace rast::fast::detail {
 
@@ -25,8 +26,9 @@ constexpr bool is_fixed(Precision p) { return subpixel_bits(p) != 0; }
 // magnitude >= 2^(52-bits) is already a multiple of 2^-bits (its ulp is at least that), which also
 // keeps x·2^bits from overflowing. std::nearbyint rounds ties to even under the default rounding mode.
 inline double snap_coordinate(double x, int bits) {
-    if (!(std::abs(x) < std::ldexp(1.0, 52 - bits))) return x;
-    return std::ldexp(std::nearbyint(std::ldexp(x, bits)), -bits);
+    const double scale = static_cast<double>(std::int64_t{1} << bits);  // multiplying by it is exact
+    if (!(std::abs(x) * scale < 0x1p52)) return x;
+    return std::nearbyint(x * scale) / scale;
 }
 
 }  // namespace rast::fast::detail
