@@ -17,10 +17,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace rast::reference {
 
@@ -164,7 +167,7 @@ public:
     void for_each_covered(const CcwTriangle& t, const detail::PixelBox& box,
                           std::span<const SamplePoint> pattern, Visit visit) {
         if (box.empty()) return;
-        std::array<Run, 16> runs{};
+        std::array<Run, 16> runs{};  // one per sample of the largest pattern
         const int n = static_cast<int>(pattern.size());
         for (int j = box.j0; j <= box.j1; ++j) {
             int first = box.i1 + 1, last = box.i0 - 1;

@@ -1,9 +1,12 @@
 // Traversal: the row runs found by binary search against brute-force inside() on every sample, and
 // multisample counts worked out by hand from the sample tables.
+#include "pixel_box.h"
 #include "scenes.h"
 
 #include <gtest/gtest.h>
 
+#include <cfloat>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -12,6 +15,22 @@ namespace {
 
 using testing::flat;
 using testing::reversed;
+
+// Pixel k's closed square [k, k + 1] meets [lo, hi] iff ceil(lo) - 1 <= k <= floor(hi), clamped to
+// [0, n - 1] for any finite double.
+TEST(Traversal, BoundingBoxClampedToTheViewport) {
+    using detail::clamped_span;
+    const double d = std::numeric_limits<double>::denorm_min();
+    EXPECT_EQ(clamped_span(3, 3, 8), std::pair(2, 3));          // x = 3 is on pixels 2 and 3
+    EXPECT_EQ(clamped_span(2.5, 4.25, 8), std::pair(2, 4));
+    EXPECT_EQ(clamped_span(-DBL_MAX, DBL_MAX, 8), std::pair(0, 7));
+    EXPECT_EQ(clamped_span(-std::ldexp(1.0, 60), 0.5, 8), std::pair(0, 0));
+    EXPECT_EQ(clamped_span(d, d, 8), std::pair(0, 0));
+    EXPECT_EQ(clamped_span(-d, -d, 8), std::pair(0, -1));      // left of the viewport
+    EXPECT_EQ(clamped_span(8, DBL_MAX, 8), std::pair(7, 7));    // pixel 7 reaches x = 8
+    EXPECT_EQ(clamped_span(8.5, DBL_MAX, 8), std::pair(0, -1));
+    EXPECT_EQ(clamped_span(std::ldexp(1.0, 60), std::ldexp(1.0, 61), 8), std::pair(0, -1));
+}
 
 std::vector<std::size_t> brute_force(const Triangle& t, Viewport vp, int samples) {
     const auto pattern = sample_pattern(samples);
