@@ -1,0 +1,65 @@
+// rast — RapidCheck generators of scenes that reach the hard cases of rasterization: vertices on pixel
+// centres and subpixel grids or a few ulps off them, arbitrary doubles, needles, slivers, zero and
+// near-zero area, huge coordinates and subnormals; triangulated regions with exactly shared vertices
+// (closed fans around a sample, strips, grids, triangulations of point sets and polygons, the front of a
+// closed mesh under a random camera); overlapping and interpenetrating triangles with equal and unequal
+// depths. Every scene is valid input: finite coordinates, a viewport of 1..24 pixels a side.
+#pragma once
+
+#include <rast/scene.h>
+
+#include <rapidcheck.h>
+
+namespace rast::gen {
+
+// A coordinate in [lo, hi]: on the pixel grid, on pixel centres, on a 2^-bits subpixel grid
+// (bits 1..16), a few ulps off such a point, or an arbitrary double.
+rc::Gen<double> coordinate(double lo, double hi);
+
+// A depth: often from a few shared values (to make ties), otherwise arbitrary in [-1, 2].
+rc::Gen<double> depth();
+
+rc::Gen<Viewport> viewport();
+rc::Gen<int> sample_count();  // 1, 4, 8 or 16
+
+// One triangle near the viewport, of a kind drawn at random: ordinary, needle, sliver, exactly
+// degenerate, reaching out to huge coordinates (up to 2^60), or touching subnormals.
+rc::Gen<Triangle> triangle(Viewport vp);
+
+// A few triangles of any kind (triangle()), with any sample count.
+rc::Gen<Scene> loose_triangles();
+
+// Wide, short viewports (64..256 pixels by 1..4) crossed by triangles with a vertex up to 2^25 pixels
+// away: long rows of samples whose edge functions are large, where float rounding accumulates.
+rc::Gen<Scene> long_rows();
+
+// Triangles with exactly shared vertices tiling a region, every one in a random vertex order and the
+// list in a random order: a closed fan around a sample, a strip, a perturbed grid, a triangulation of a
+// point set or a polygon (CGAL), or the front faces of a closed mesh under a random camera.
+rc::Gen<Scene> triangulated_region();
+// The same, with every vertex on the 2^-bits grid (so that a fixed mode's snapping leaves it alone).
+rc::Gen<Scene> triangulated_region_on_grid(int bits);
+
+// Overlapping and interpenetrating triangles: coplanar at equal depths, duplicated, or on crossing
+// planes; often sharing vertices, always with depth ties somewhere likely.
+rc::Gen<Scene> overlapping_triangles();
+
+// One of all of the above.
+rc::Gen<Scene> any_scene();
+
+// Parts the generators above are built from, for the triangulation sources in their own files.
+namespace detail {
+// The triangles of a region, shuffled and each in a random vertex order.
+rc::Gen<std::vector<Triangle>> shuffled(std::vector<Triangle> triangles);
+// Points for a triangulation in [lo, hi]^2: on a 2^-bits grid with bits >= 0, else arbitrary doubles.
+rc::Gen<std::vector<Vertex>> point_set(double lo, double hi, int bits);
+// Triangulations by CGAL: Delaunay, the insertion-order triangulation (long, thin triangles), and the
+// constrained triangulation of a random simple polygon.
+rc::Gen<std::vector<Triangle>> delaunay(Viewport vp, int bits);
+rc::Gen<std::vector<Triangle>> insertion_order_triangulation(Viewport vp, int bits);
+rc::Gen<std::vector<Triangle>> polygon_triangulation(Viewport vp, int bits);
+// The front faces of a closed convex mesh read through rast::scene, seen from a random camera outside it.
+rc::Gen<std::vector<Triangle>> mesh_front(Viewport vp);
+}  // namespace detail
+
+}  // namespace rast::gen

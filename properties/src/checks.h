@@ -1,0 +1,38 @@
+// rast properties — the property checks, one function each (registered in registry.cpp), and the
+// comparisons they share.
+#pragma once
+
+#include <rast/properties.h>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rast::properties {
+
+Outcome watertight(const Scene& scene, const Engine& engine);
+Outcome tie_rule(const Scene& scene, const Engine& engine);
+Outcome winding_invariance(const Scene& scene, const Engine& engine);
+Outcome translation_invariance(const Scene& scene, const Engine& engine);
+Outcome order_independence(const Scene& scene, const Engine& engine);
+Outcome fixed_matches_reference(const Scene& scene, const Engine& engine);
+Outcome float_within_bound(const Scene& scene, const Engine& engine);
+Outcome msaa_counts(const Scene& scene, const Engine& engine);
+Outcome area_tiling(const Scene& scene, const Engine& engine);
+
+// The first triangle that snapping to an engine's grid turns over (or gives area it did not have):
+// the snapped scene is then no longer the tiling the original was.
+std::optional<std::size_t> folded_by_snapping(const Scene& scene, const Scene& geometry);
+
+// The first sample at which two ascending sample lists differ, described with what each side said;
+// nullopt when they are equal.
+std::optional<std::string> first_difference(const std::vector<std::size_t>& a, const std::string& a_name,
+                                            const std::vector<std::size_t>& b, const std::string& b_name,
+                                            Viewport vp, int samples);
+
+// The first sample whose id (and, when `depths`, whose depth bit pattern) differs; nullopt when equal.
+std::optional<std::string> first_difference(const Framebuffer& a, const std::string& a_name,
+                                            const Framebuffer& b, const std::string& b_name, bool depths);
+
+}  // namespace rast::properties

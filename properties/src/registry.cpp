@@ -1,0 +1,58 @@
+#include <stdexcept>
+
+#include "checks.h"
+
+namespace rast::properties {
+
+namespace {
+
+bool every_engine(const Engine&) { return true; }
+bool exact_engines(const Engine& e) { return e.exact(); }
+bool fixed_engines(const Engine& e) { return e.snap_bits().has_value(); }
+bool float_engines(const Engine& e) { return !e.exact(); }
+
+// Float modes are bound only by float_within_bound: near an edge they may classify either way, so
+// exact coverage claims (shared edges, ties, translations) are not theirs to keep.
+constexpr Property kProperties[] = {
+    {"watertight", "in a triangulated region every inner sample is covered exactly once, none outside",
+     exact_engines, watertight},
+    {"tie_rule", "samples on edges and vertices are owned by left and top edges only", exact_engines, tie_rule},
+    {"winding_invariance", "every vertex order covers the same samples", every_engine, winding_invariance},
+    {"translation_invariance", "a whole-pixel shift of the scene shifts its image", exact_engines,
+     translation_invariance},
+    {"order_independence", "every draw order gives the (z, id) minimum", every_engine, order_independence},
+    {"fixed_matches_reference", "fixed N equals the reference on vertices snapped to N bits", fixed_engines,
+     fixed_matches_reference},
+    {"float_within_bound", "float modes differ from the reference only within their error bound of an edge",
+     float_engines, float_within_bound},
+    {"msaa_counts", "per-pixel covered-sample counts equal the exact rule's", exact_engines, msaa_counts},
+    {"area_tiling", "exact pixel areas of a tiling sum exactly and decide full and empty pixels", exact_engines,
+     area_tiling},
+};
+
+}  // namespace
+
+std::span<const Property> all_properties() { return kProperties; }
+
+const Property& property(std::string_view name) {
+    for (const Property& p : kProperties)
+        if (p.name == name) return p;
+    std::string known;
+    for (const Property& p : kProperties) known += (known.empty() ? "" : ", ") + std::string(p.name);
+    throw std::invalid_argument("unknown property '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::vector<Failure> check_case(const Scene& scene, std::span<const std::string> property_names) {
+    std::vector<const Property*> selected;
+    for (const std::string& name : property_names) selected.push_back(&property(name));
+    const std::vector<Engine> engines = all_engines();
+    std::vector<Failure> failures;
+    for (const Property* p : selected)
+        for (const Engine& engine : engines)
+            if (p->applies_to(engine))
+                if (Outcome o = p->check(scene, engine); o.failed())
+                    failures.push_back({std::string(p->name), engine.name, std::move(o.detail)});
+    return failures;
+}
+
+}  // namespace rast::properties

@@ -1,0 +1,164 @@
+// Each property bites: run on a deliberately broken fast path with a fixed seed, it fails, and its
+// counterexample is kept. If a property or a generator loses its power, one of these tests fails.
+#include <rast/exact_geometry.h>
+#include <rast/fast_faults.h>
+#include <rast/tri_format.h>
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "property_harness.h"
+
+namespace {
+
+using rast::Framebuffer;
+using rast::Scene;
+using rast::Triangle;
+using rast::Viewport;
+using rast::fast::Fault;
+using rast::fast::Precision;
+using rast::properties::Engine;
+
+// Broken variants written here, for the two properties that no fault inside the fast path breaks: the
+// wrapper changes what the fast path is given, as a careless caller or setup stage would.
+enum class Wrapper {
+    none,
+    culling_left_on,     // clockwise triangles dropped: back-face culling where none was asked for
+    snap_by_truncation,  // vertices cut toward zero to 1/256 before the fixed8 path, not rounded
+};
+
+struct Bite {
+    const char* name;  // for the test's name
+    Fault fault;
+    Wrapper wrapper;
+    Precision precision;
+    const char* property;
+};
+
+Triangle cut_toward_zero(Triangle t) {
+    for (auto& v : t.v) {
+        v.x = std::ldexp(std::trunc(std::ldexp(v.x, 8)), -8);
+        v.y = std::ldexp(std::trunc(std::ldexp(v.y, 8)), -8);
+    }
+    return t;
+}
+
+Triangle culled(const Triangle& t) {
+    if (rast::properties::orientation(t) >= 0) return t;
+    return {{t.v[0], t.v[0], t.v[0]}};  // zero area: covers nothing, keeps its id
+}
+
+Engine broken(const Bite& b) {
+    Engine e = rast::properties::fast_engine(b.precision);
+    const auto given = [w = b.wrapper](const Triangle& t) {
+        return w == Wrapper::culling_left_on ? culled(t) : w == Wrapper::snap_by_truncation ? cut_toward_zero(t) : t;
+    };
+    e.render = [b, given](const Scene& s) {
+        Scene seen = s;
+        for (Triangle& t : seen.triangles) t = given(t);
+        return rast::fast::render_with_fault(seen, {b.precision, 1}, b.fault);
+    };
+    e.covered_samples = [b, given](const Triangle& t, Viewport vp, int n) {
+        return rast::fast::covered_samples_with_fault(given(t), vp, n, b.precision, b.fault);
+    };
+    return e;
+}
+
+class Bites : public ::testing::TestWithParam<Bite> {
+protected:
+    void SetUp() override {
+        corpus_ = std::filesystem::temp_directory_path() /
+                  ("rast-bite-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                   GetParam().name);
+        std::filesystem::remove_all(corpus_);
+        ::setenv("RAST_CORPUS_OUT", corpus_.c_str(), 1);
+    }
+    void TearDown() override {
+        ::unsetenv("RAST_CORPUS_OUT");
+        std::filesystem::remove_all(corpus_);
+    }
+    std::filesystem::path corpus_;
+};
+
+TEST_P(Bites, PropertyFailsAndKeepsItsCounterexample) {
+    const Bite& b = GetParam();
+    const std::vector<Engine> engine{broken(b)};
+    rc::detail::TestMetadata metadata;
+    metadata.id = std::string("Bites/") + b.name;
+    rc::detail::TestParams params;
+    params.seed = 20261121;  // fixed: the test is about this search, not a lucky one
+    params.maxSuccess = 300;
+    const auto result = rc::detail::checkTestable(
+        [&] { rast::harness::hold(b.property, *rast::harness::scenes_for(b.property), engine); }, metadata, params);
+    ASSERT_TRUE(result.is<rc::detail::FailureResult>()) << b.property << " did not detect " << b.name;
+
+    // The minimal counterexample was kept where RAST_CORPUS_OUT says, naming the property it breaks.
+    ASSERT_TRUE(std::filesystem::is_directory(corpus_));
+    std::vector<std::filesystem::path> kept(std::filesystem::directory_iterator(corpus_), {});
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_EQ(kept[0].filename().string().rfind(std::string(b.property) + "-", 0), 0u);
+    const auto document = rast::read_tri_document_file(kept[0]);
+    EXPECT_EQ(document.header.at(0), (std::pair<std::string, std::string>{"properties", b.property}));
+    // Replayed on the broken engine, the kept scene still fails the property.
+    const auto& p = rast::properties::property(b.property);
+    EXPECT_TRUE(p.check(document.scene, engine[0]).failed());
+}
+
+// For each fault, the properties that must notice it.
+const Bite kBites[] = {
+    {"wrong_tie_bias_tie_rule", Fault::wrong_tie_bias, Wrapper::none, Precision::fixed8, "tie_rule"},
+    {"wrong_tie_bias_msaa_counts", Fault::wrong_tie_bias, Wrapper::none, Precision::fixed4, "msaa_counts"},
+    {"wrong_tie_bias_fixed_matches_reference", Fault::wrong_tie_bias, Wrapper::none, Precision::fixed16,
+     "fixed_matches_reference"},
+    {"integer_samples_watertight", Fault::integer_sample_positions, Wrapper::none, Precision::fixed8, "watertight"},
+    {"integer_samples_tie_rule", Fault::integer_sample_positions, Wrapper::none, Precision::fixed4, "tie_rule"},
+    {"integer_samples_area_tiling", Fault::integer_sample_positions, Wrapper::none, Precision::fixed8, "area_tiling"},
+    {"integer_samples_msaa_counts", Fault::integer_sample_positions, Wrapper::none, Precision::fixed16,
+     "msaa_counts"},
+    {"integer_samples_float_within_bound", Fault::integer_sample_positions, Wrapper::none, Precision::float32,
+     "float_within_bound"},
+    {"depth_less_equal_order_independence", Fault::depth_less_equal, Wrapper::none, Precision::fixed8,
+     "order_independence"},
+    {"depth_less_equal_order_independence_float64", Fault::depth_less_equal, Wrapper::none, Precision::float64,
+     "order_independence"},
+    {"depth_less_equal_fixed_matches_reference", Fault::depth_less_equal, Wrapper::none, Precision::fixed8,
+     "fixed_matches_reference"},
+    {"no_id_tiebreak_order_independence", Fault::no_id_tiebreak, Wrapper::none, Precision::fixed16,
+     "order_independence"},
+    {"no_id_tiebreak_order_independence_float32", Fault::no_id_tiebreak, Wrapper::none, Precision::float32,
+     "order_independence"},
+    {"no_id_tiebreak_fixed_matches_reference", Fault::no_id_tiebreak, Wrapper::none, Precision::fixed8,
+     "fixed_matches_reference"},
+    {"bbox_one_short_watertight", Fault::bbox_one_short, Wrapper::none, Precision::fixed8, "watertight"},
+    {"bbox_one_short_tie_rule", Fault::bbox_one_short, Wrapper::none, Precision::fixed16, "tie_rule"},
+    {"bbox_one_short_area_tiling", Fault::bbox_one_short, Wrapper::none, Precision::fixed4, "area_tiling"},
+    {"bbox_one_short_msaa_counts", Fault::bbox_one_short, Wrapper::none, Precision::fixed8, "msaa_counts"},
+    {"bbox_one_short_fixed_matches_reference", Fault::bbox_one_short, Wrapper::none, Precision::fixed8,
+     "fixed_matches_reference"},
+    {"bbox_one_short_float_within_bound", Fault::bbox_one_short, Wrapper::none, Precision::float64,
+     "float_within_bound"},
+    {"float_row_accumulation_float_within_bound", Fault::float_row_accumulation, Wrapper::none, Precision::float32,
+     "float_within_bound"},
+    {"culling_left_on_winding_invariance", Fault::none, Wrapper::culling_left_on, Precision::fixed8,
+     "winding_invariance"},
+    {"snap_by_truncation_translation_invariance", Fault::none, Wrapper::snap_by_truncation, Precision::fixed8,
+     "translation_invariance"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Faults, Bites, ::testing::ValuesIn(kBites),
+                         [](const ::testing::TestParamInfo<Bite>& info) { return std::string(info.param.name); });
+
+// Every property is bitten by at least one broken variant above.
+TEST(Bites, EveryPropertyIsBitten) {
+    for (const auto& p : rast::properties::all_properties()) {
+        bool bitten = false;
+        for (const Bite& b : kBites) bitten = bitten || p.name == b.property;
+        EXPECT_TRUE(bitten) << p.name;
+    }
+}
+
+}  // namespace

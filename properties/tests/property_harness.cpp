@@ -1,0 +1,85 @@
+#include "property_harness.h"
+
+#include <rast/property_generators.h>
+#include <rast/tri_format.h>
+
+#include <rapidcheck/detail/Configuration.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace rast::harness {
+
+rc::Gen<Scene> scenes_for(std::string_view property) {
+    if (property == "watertight" || property == "area_tiling")
+        return rc::gen::oneOf(gen::triangulated_region(),
+                              rc::gen::exec([] { return *gen::triangulated_region_on_grid(*rc::gen::element(4, 8, 16)); }));
+    if (property == "order_independence")
+        return rc::gen::weightedOneOf<Scene>({{3, gen::overlapping_triangles()}, {1, gen::any_scene()}});
+    if (property == "float_within_bound") return rc::gen::oneOf(gen::any_scene(), gen::long_rows());
+    if (property == "msaa_counts")
+        return rc::gen::map(rc::gen::pair(gen::any_scene(), rc::gen::element(4, 8, 16)), [](std::pair<Scene, int> p) {
+            p.first.samples = p.second;
+            return p.first;
+        });
+    properties::property(property);  // throws for a name that is not a property
+    return gen::any_scene();
+}
+
+void hold(std::string_view name, const Scene& scene, std::span<const properties::Engine> engines) {
+    const properties::Property& p = properties::property(name);
+    bool checked = false;
+    for (const properties::Engine& engine : engines) {
+        if (!p.applies_to(engine)) continue;
+        const properties::Outcome outcome = p.check(scene, engine);
+        if (outcome.failed()) {
+            const auto kept = keep_counterexample(name, engine.name, scene, outcome.detail);
+            RC_FAIL(std::string(name) + " fails on " + engine.name + ": " + outcome.detail + " (kept in " +
+                    kept.string() + ")");
+        }
+        checked = checked || outcome.verdict == properties::Outcome::Verdict::pass;
+    }
+    RC_PRE(checked);
+}
+
+namespace {
+
+std::filesystem::path corpus_dir() {
+    if (const char* dir = std::getenv("RAST_CORPUS_OUT"); dir && *dir) return dir;
+    return RAST_DEFAULT_CORPUS_OUT;
+}
+
+// A header value is one line without surrounding blanks.
+std::string one_line(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    std::replace(text.begin(), text.end(), '\r', ' ');
+    const auto first = text.find_first_not_of(" \t");
+    const auto last = text.find_last_not_of(" \t");
+    return first == std::string::npos ? "-" : text.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+std::filesystem::path keep_counterexample(std::string_view property, const std::string& engine, const Scene& scene,
+                                          const std::string& why) {
+    // The run's parameters (RC_PARAMS, or RapidCheck's random seed) reproduce the search: RapidCheck
+    // derives every case of a property from the seed and the property's name alone.
+    const auto& params = rc::detail::configuration().testParams;
+    const std::string seed = std::to_string(params.seed);
+    const std::filesystem::path dir = corpus_dir();
+    std::filesystem::create_directories(dir);
+    const auto path = dir / (std::string(property) + "-" + seed + ".tri");
+    write_tri_file(path, scene,
+                   {{"properties", std::string(property)},
+                    {"engine", engine},
+                    {"why", one_line(why)},
+                    {"seed", seed},
+                    {"found-by", "property_tests"},
+                    {"reproduce", "RC_PARAMS=\"seed=" + seed + " max_success=" + std::to_string(params.maxSuccess) +
+                                      " max_size=" + std::to_string(params.maxSize) +
+                                      "\" property_tests --gtest_filter=Properties." + std::string(property)}});
+    return path;
+}
+
+}  // namespace rast::harness

@@ -1,0 +1,43 @@
+// The properties of rast/properties.h as RapidCheck properties, each held by the reference and by the
+// fast path in every precision mode it applies to. CI runs them with a fixed seed (RC_PARAMS in ctest);
+// scripts/property-campaign runs them long.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "property_harness.h"
+
+namespace {
+
+using rast::harness::hold;
+using rast::harness::scenes_for;
+
+const std::vector<rast::properties::Engine>& engines() {
+    static const auto all = rast::properties::all_engines();
+    return all;
+}
+
+// One test per property, named as the property, so that reproduce strings and corpus headers agree.
+#define RAST_PROPERTY(name) \
+    RC_GTEST_PROP(Properties, name, ()) { hold(#name, *scenes_for(#name), engines()); }
+
+RAST_PROPERTY(watertight)
+RAST_PROPERTY(tie_rule)
+RAST_PROPERTY(winding_invariance)
+RAST_PROPERTY(translation_invariance)
+RAST_PROPERTY(order_independence)
+RAST_PROPERTY(fixed_matches_reference)
+RAST_PROPERTY(float_within_bound)
+RAST_PROPERTY(msaa_counts)
+RAST_PROPERTY(area_tiling)
+
+// Every registered property has its test above.
+TEST(Properties, EveryPropertyIsTested) {
+    const std::vector<std::string> tested{"watertight", "tie_rule", "winding_invariance", "translation_invariance",
+                                          "order_independence", "fixed_matches_reference", "float_within_bound",
+                                          "msaa_counts", "area_tiling"};
+    std::vector<std::string> registered;
+    for (const auto& p : rast::properties::all_properties()) registered.emplace_back(p.name);
+    EXPECT_EQ(registered, tested);
+}
+
+}  // namespace
