@@ -7,5 +7,6 @@
 namespace rast::cli {
 
 void add_render_command(CLI::App& app);
+void add_replay_command(CLI::App& app, int& status);
 
 }  // namespace rast::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     int status = 0;
     rast::cli::add_render_command(app);
+    rast::cli::add_replay_command(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,172 @@
+#include "replay.h"
+
+#include <rast/tri_format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <exception>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+namespace rast::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using properties::Engine;
+using properties::Failure;
+using properties::Outcome;
+using properties::Property;
+
+// A problem with the case file itself rather than with an engine.
+struct CaseError {
+    std::int64_t line;  // 0: the file as a whole
+    std::string message;
+};
+
+CaseReport error_report(const fs::path& file, const CaseError& e) {
+    std::string line = "ERROR ";
+    line += file.string();
+    if (e.line > 0) {
+        line += ':';
+        line += std::to_string(e.line);
+    }
+    line += ": " + e.message;
+    return {CaseReport::Status::error, std::move(line), {}};
+}
+
+// The whole file, read once: the parser gets it, and header problems are located in it.
+std::string read_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw CaseError{0, "cannot open: " + std::generic_category().message(errno)};
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw CaseError{0, "cannot read"};
+    return text.str();
+}
+
+// The line of the first "# key:" comment, so that a bad header value is reported where it is written;
+// 1 when the key is missing, since the header belongs at the top.
+std::int64_t header_line(const std::string& text, std::string_view key) {
+    std::istringstream lines(text);
+    std::string line;
+    for (std::int64_t number = 1; std::getline(lines, line); ++number) {
+        std::string_view rest(line);
+        const auto skip_blanks = [&rest] {
+            while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+        };
+        skip_blanks();
+        if (rest.empty() || rest.front() != '#') continue;
+        rest.remove_prefix(1);
+        skip_blanks();
+        if (rest.starts_with(key) && rest.substr(key.size()).starts_with(':')) return number;
+    }
+    return 1;
+}
+
+// The properties the header names, each once, all known.
+std::vector<const Property*> named_properties(const TriDocument& doc, const std::string& text) {
+    const std::vector<std::string> keys = [&] {
+        std::vector<std::string> values;
+        for (const auto& [key, value] : doc.header)
+            if (key == "properties") values.push_back(value);
+        return values;
+    }();
+    const std::int64_t line = header_line(text, "properties");
+    if (keys.empty()) throw CaseError{line, "no '# properties:' header naming the properties that apply"};
+    if (keys.size() > 1) throw CaseError{line, "more than one '# properties:' header; name them all on one line"};
+
+    std::vector<const Property*> selected;
+    std::set<std::string> seen;
+    std::istringstream names(keys.front());
+    for (std::string name; names >> name;) {
+        if (!seen.insert(name).second) throw CaseError{line, "property '" + name + "' is named twice"};
+        try {
+            selected.push_back(&properties::property(name));
+        } catch (const std::invalid_argument& e) {
+            throw CaseError{line, e.what()};
+        }
+    }
+    if (selected.empty()) throw CaseError{line, "'# properties:' names no property"};
+    return selected;
+}
+
+std::string pass_line(const fs::path& file, std::size_t properties, std::size_t engines, std::size_t checks,
+                      std::size_t not_applicable) {
+    return "PASS " + file.string() + " (" + std::to_string(properties) + " properties x " +
+           std::to_string(engines) + " engines: " + std::to_string(checks) + " checks, " +
+           std::to_string(not_applicable) + " not applicable)";
+}
+
+std::string fail_line(const fs::path& file, const std::vector<Failure>& failures) {
+    const Failure& first = failures.front();
+    std::string line = "FAIL " + file.string() + " " + first.property + " [" + first.engine + "]: " + first.detail;
+    if (failures.size() > 1) line += " (and " + std::to_string(failures.size() - 1) + " more failures)";
+    return line;
+}
+
+}  // namespace
+
+std::vector<fs::path> corpus_files(std::span<const fs::path> paths) {
+    std::vector<fs::path> files;
+    for (const fs::path& path : paths) {
+        if (!fs::is_directory(path)) {
+            files.push_back(path);
+            continue;
+        }
+        std::vector<fs::path> found;
+        for (const auto& entry : fs::recursive_directory_iterator(path))
+            if (entry.is_regular_file() && entry.path().extension() == ".tri") found.push_back(entry.path());
+        std::sort(found.begin(), found.end());
+        files.insert(files.end(), found.begin(), found.end());
+    }
+    return files;
+}
+
+CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
+    std::string text;
+    TriDocument doc;
+    std::vector<const Property*> selected;
+    try {
+        text = read_text(file);
+        std::istringstream in(text);
+        doc = read_tri_document(in, file.string());
+        selected = named_properties(doc, text);
+    } catch (const CaseError& e) {
+        return error_report(file, e);
+    } catch (const ParseError& e) {
+        return {CaseReport::Status::error, std::string("ERROR ") + e.what(), {}};
+    }
+
+    std::vector<Failure> failures;
+    std::size_t checks = 0, not_applicable = 0;
+    std::string why_not;
+    for (const Property* p : selected) {
+        for (const Engine& engine : engines) {
+            if (!p->applies_to(engine)) continue;
+            Outcome outcome;
+            try {
+                outcome = p->check(doc.scene, engine);
+            } catch (const std::exception& e) {
+                // The scene was accepted by the reader: an engine that throws on it has failed.
+                outcome = Outcome::fail(engine.name + " threw: " + e.what());
+            }
+            if (outcome.verdict == Outcome::Verdict::not_applicable) {
+                ++not_applicable;
+                if (why_not.empty()) why_not = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
+                continue;
+            }
+            ++checks;
+            if (outcome.failed()) failures.push_back({std::string(p->name), engine.name, std::move(outcome.detail)});
+        }
+    }
+    if (!failures.empty()) return {CaseReport::Status::fail, fail_line(file, failures), std::move(failures)};
+    if (checks == 0)
+        return error_report(file, {header_line(text, "properties"),
+                                   "checks nothing: no named property applies to any engine" +
+                                       (why_not.empty() ? std::string{} : " (" + why_not + ")")});
+    return {CaseReport::Status::pass, pass_line(file, selected.size(), engines.size(), checks, not_applicable), {}};
+}
+
+}  // namespace rast::cli

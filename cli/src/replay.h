@@ -1,0 +1,36 @@
+// rast — replaying corpus cases: every property a case's header names, on every engine it applies to.
+// The core of `rast replay`, kept apart from the command so that it can be run on other engines (a
+// deliberately broken fast path in the tests). Replay only reads: files are opened for reading, never
+// rewritten, reordered or touched.
+#pragma once
+
+#include <rast/properties.h>
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace rast::cli {
+
+// The .tri files to replay: a file is taken as given; a folder contributes every .tri file below it,
+// in path order, so that a run's output is the same everywhere.
+std::vector<std::filesystem::path> corpus_files(std::span<const std::filesystem::path> paths);
+
+struct CaseReport {
+    enum class Status { pass, fail, error };
+    Status status = Status::pass;
+    // The one line printed for the case:
+    //   PASS path (P properties x E engines: C checks, N not applicable)
+    //   FAIL path property [engine]: what differs, at which sample (and K more failures)
+    //   ERROR path:line: what is wrong with the file
+    std::string line;
+    std::vector<properties::Failure> failures;  // in property then engine order
+};
+
+// Reads the case, runs each property of its "# properties:" header on each engine it applies to. A file
+// that cannot be read, is malformed, names no property, an unknown one or one twice, or whose properties
+// apply to none of the engines (it would check nothing) is an error.
+CaseReport replay_case(const std::filesystem::path& file, std::span<const properties::Engine> engines);
+
+}  // namespace rast::cli

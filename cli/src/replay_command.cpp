@@ -1,0 +1,39 @@
+// rast replay: every corpus case, every property its header names, every engine; one line per case.
+#include "commands.h"
+#include "replay.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+namespace rast::cli {
+
+void add_replay_command(CLI::App& app, int& status) {
+    auto paths = std::make_shared<std::vector<std::filesystem::path>>();
+    CLI::App* cmd = app.add_subcommand(
+        "replay",
+        "Replay corpus cases (.tri files, or folders of them; default: corpus/). Each case's '# properties:'\n"
+        "header names the properties that apply; each runs on the reference and on every fast precision it\n"
+        "applies to. One line per case: PASS, FAIL with the property, engine and first differing sample, or\n"
+        "ERROR path:line for a malformed file (the other cases still run). Then 'N passed, M failed' (errors\n"
+        "count as failed); the exit status is non-zero if any case failed. Files are only read.");
+    cmd->add_option("PATH", *paths, "Case files or folders")->default_str("corpus");
+    cmd->callback([paths, &status] {
+        if (paths->empty()) paths->push_back("corpus");
+        const auto engines = properties::all_engines();
+        const auto files = corpus_files(*paths);
+        if (files.empty()) throw std::runtime_error("no .tri case found: nothing to replay");
+        std::size_t passed = 0, failed = 0;
+        for (const auto& file : files) {
+            const CaseReport report = replay_case(file, engines);
+            std::cout << report.line << std::endl;
+            (report.status == CaseReport::Status::pass ? passed : failed) += 1;
+        }
+        std::cout << passed << " passed, " << failed << " failed\n";
+        if (failed > 0) status = 1;
+    });
+}
+
+}  // namespace rast::cli
