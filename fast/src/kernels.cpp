@@ -94,11 +94,13 @@ std::uint64_t DepthRowImpl(const DepthRow& row, std::uint64_t covered, double* z
                x0 = hn::Set(d, row.x0), e = hn::Set(d, row.err), sx = hn::Set(d, row.sx);
     const auto id = hn::Set(di, row.id);
     const auto none = hn::Zero(di);
+    // px = i + sx for the lanes: sums of integers below 2^25 and multiples of 1/16, exact.
+    const auto advance = hn::Set(d, static_cast<double>(lanes));
+    auto px = hn::Add(hn::Iota(d, static_cast<double>(row.i0)), sx);
     std::uint64_t undecided = 0;
-    for (int k = 0; k < kRowLanes && covered >> k != 0; k += lanes) {
+    for (int k = 0; k < kRowLanes && covered >> k != 0; k += lanes, px = hn::Add(px, advance)) {
         const std::uint64_t bits = (covered >> k) & first_n(lanes);
         if (bits == 0) continue;
-        const auto px = hn::Add(hn::ConvertTo(d, hn::Iota(di, row.i0 + k)), sx);
         const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
         const auto stored = hn::LoadU(d, z + k), stored_err = hn::LoadU(d, err + k);
         const auto stored_id = hn::LoadU(di, ids + k);
