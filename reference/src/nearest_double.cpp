@@ -5,11 +5,13 @@
 
 namespace rast::reference::detail {
 
-double nearest_double(const Rational& q) {
-    using boost::multiprecision::mpz_int;
-    if (q.is_zero()) return 0.0;
-    mpz_int num = abs(numerator(q));
-    mpz_int den = denominator(q);
+using boost::multiprecision::mpz_int;
+
+double nearest_double(mpz_int num, mpz_int den) {
+    if (num.is_zero()) return 0.0;
+    const bool negative = (num.sign() < 0) != (den.sign() < 0);
+    num = abs(num);
+    den = abs(den);
 
     // e with 2^e <= num/den < 2^(e+1).
     long e = static_cast<long>(msb(num)) - static_cast<long>(msb(den));
@@ -34,7 +36,7 @@ double nearest_double(const Rational& q) {
 
     // m <= 2^53 converts exactly; ldexp is exact unless it overflows, which is the correct infinity.
     const double magnitude = std::ldexp(m.convert_to<double>(), static_cast<int>(lsb));
-    return q.sign() < 0 ? -magnitude : magnitude;
+    return negative ? -magnitude : magnitude;
 }
 
 }  // namespace rast::reference::detail

@@ -3,7 +3,7 @@
 #include <rast/reference.h>
 
 #include "depth_plane.h"
-#include "nearest_double.h"
+#include "exact_depth.h"
 #include "pixel_box.h"
 #include "validate.h"
 
@@ -251,15 +251,15 @@ public:
     explicit ExactDepths(const std::vector<Triangle>& triangles)
         : triangles_(triangles), planes_(triangles.size()) {}
 
-    Rational at(std::int32_t id, double x, double y) {
+    const detail::ExactDepth& operator[](std::int32_t id) {
         auto& plane = planes_[static_cast<std::size_t>(id)];
-        if (!plane) plane = detail::depth_plane<Rational>(triangles_[static_cast<std::size_t>(id)]);
-        return plane->at(Rational(x), Rational(y));
+        if (!plane) plane.emplace(triangles_[static_cast<std::size_t>(id)]);
+        return *plane;
     }
 
 private:
     const std::vector<Triangle>& triangles_;
-    std::vector<std::optional<detail::DepthPlane<Rational>>> planes_;
+    std::vector<std::optional<detail::ExactDepth>> planes_;
 };
 
 // A framebuffer without storage: only its index layout.
@@ -302,7 +302,7 @@ Rational depth_at(const Triangle& t, double x, double y) {
     Stats stats;
     if (!Rasterizer(stats).prepare(t))
         throw std::invalid_argument("depth_at: the triangle has zero area, so no depth plane");
-    return detail::depth_plane<Rational>(t).at(Rational(x), Rational(y));
+    return detail::ExactDepth(t).at(x, y);
 }
 
 Framebuffer render(const Scene& scene, Stats* stats_out) {
@@ -335,9 +335,8 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
                 if (certainly_below(stored_depth[index], z)) return;
                 if (!certainly_below(z, stored_depth[index])) {
                     ++stats.depth_exact;
-                    const Rational mine = exact.at(id, q.x, q.y);
-                    const Rational theirs = exact.at(stored, q.x, q.y);
-                    if (theirs < mine || (theirs == mine && stored < id)) return;
+                    const int order = exact[id].compare(exact[stored], q.x, q.y);
+                    if (order > 0 || (order == 0 && stored < id)) return;
                 }
             }
             fb.ids[index] = id;
@@ -352,7 +351,7 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
                 const std::size_t index = fb.index(i, j, s);
                 if (fb.ids[index] == Framebuffer::kNoTriangle) continue;
                 const SamplePoint& p = pattern[static_cast<std::size_t>(s)];
-                fb.depth[index] = detail::nearest_double(exact.at(fb.ids[index], i + p.x, j + p.y));
+                fb.depth[index] = exact[fb.ids[index]].nearest(i + p.x, j + p.y);
             }
 
     if (stats_out) *stats_out = stats;

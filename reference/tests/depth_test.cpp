@@ -31,7 +31,17 @@ TEST(Depth, DepthAtIsTheExactPlane) {
         EXPECT_EQ(depth_at(u, 1, 0), Rational(1, 3));
         EXPECT_EQ(depth_at(u, 0, 0.25), Rational(1, 6));
         EXPECT_EQ(depth_at(u, 3, 3), Rational(3));  // the plane, also outside the triangle
+        // Points off the 1/16 grid of the sample positions, down to the smallest subnormal.
+        EXPECT_EQ(depth_at(u, 0.1, 0), Rational(0.1) / 3);
+        EXPECT_EQ(depth_at(u, 0, 0.1), Rational(0.1) * 2 / 3);
+        const double d = std::numeric_limits<double>::denorm_min();
+        EXPECT_EQ(depth_at(u, d, d), Rational(d));
     }
+    // Vertices off that grid, and depths that are not integers.
+    // z = 1/4 + (x - x0) (1/2) / (x1 - x0), with x0 and x1 the doubles nearest 0.1 and 1.1.
+    const Triangle fine = with_depth(0.1, 0, 0.25, 1.1, 0, 0.75, 0.1, 1, 0.25);
+    EXPECT_EQ(depth_at(fine, 0.6, 7),
+              Rational(1, 4) + (Rational(0.6) - Rational(0.1)) / 2 / (Rational(1.1) - Rational(0.1)));
     // z = x / 2^60 on a triangle with vertices at 2^60.
     const double big = std::ldexp(1.0, 60);
     const Rational two_to_60 = Rational(boost::multiprecision::mpz_int(1) << 60);
