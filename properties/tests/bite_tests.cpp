@@ -141,8 +141,6 @@ const Bite kBites[] = {
      "fixed_matches_reference"},
     {"bbox_one_short_float_within_bound", Fault::bbox_one_short, Wrapper::none, Precision::float64,
      "float_within_bound"},
-    {"float_row_accumulation_float_within_bound", Fault::float_row_accumulation, Wrapper::none, Precision::float32,
-     "float_within_bound"},
     {"culling_left_on_winding_invariance", Fault::none, Wrapper::culling_left_on, Precision::fixed8,
      "winding_invariance"},
     {"snap_by_truncation_translation_invariance", Fault::none, Wrapper::snap_by_truncation, Precision::fixed8,
