@@ -8,5 +8,6 @@ namespace rast::cli {
 
 void add_render_command(CLI::App& app);
 void add_replay_command(CLI::App& app, int& status);
+void add_check_command(CLI::App& app, int& status);
 
 }  // namespace rast::cli

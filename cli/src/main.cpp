@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     int status = 0;
     rast::cli::add_render_command(app);
     rast::cli::add_replay_command(app, status);
+    rast::cli::add_check_command(app, status);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
