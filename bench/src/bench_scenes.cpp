@@ -140,6 +140,29 @@ void centre_edges(const SceneSpec& spec, Random& r, std::vector<Triangle>& out) 
     }
 }
 
+void subnormals(const SceneSpec& spec, Random& r, std::vector<Triangle>& out) {
+    const auto subnormal = [&r] {
+        const double magnitude = std::ldexp(1 + r.unit(), -1023 - static_cast<int>(r.between(0, 50)));
+        return r.unit() < 0.5 ? -magnitude : magnitude;
+    };
+    const double top = spec.viewport.height;
+    for (std::size_t k = 0; k < spec.triangles; ++k) {
+        const Point apex{r.uniform(1, spec.viewport.width), r.uniform(0, top)};
+        out.push_back(triangle({subnormal(), 0}, {subnormal(), top}, apex));
+    }
+}
+
+void slivers(const SceneSpec& spec, Random& r, std::vector<Triangle>& out) {
+    for (std::size_t k = 0; k < spec.triangles; ++k) {
+        const Point a = anywhere(r, spec.viewport);
+        const double angle = r.uniform(0, 2 * kPi);
+        const Point b = polar(a, r.uniform(16, 256), angle);
+        const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+        out.push_back(triangle(a, b, polar(mid, std::ldexp(1 + r.unit(), -static_cast<int>(r.between(10, 50))),
+                                           angle + kPi / 2)));
+    }
+}
+
 void assign_depths(const SceneSpec& spec, std::vector<Triangle>& triangles) {
     // Its own stream, so that the geometry is the same for every depth mode.
     Random r(spec.seed ^ 0x9e3779b97f4a7c15ull);
@@ -159,7 +182,7 @@ void assign_depths(const SceneSpec& spec, std::vector<Triangle>& triangles) {
 
 double snap_256(double c) { return std::nearbyint(c * 256) / 256; }
 
-constexpr std::array<std::pair<Shape, std::string_view>, 9> kShapeNames{{
+constexpr std::array<std::pair<Shape, std::string_view>, 11> kShapeNames{{
     {Shape::tiny, "tiny"},
     {Shape::small, "small"},
     {Shape::medium, "medium"},
@@ -169,6 +192,8 @@ constexpr std::array<std::pair<Shape, std::string_view>, 9> kShapeNames{{
     {Shape::mesh, "mesh"},
     {Shape::fan, "fan"},
     {Shape::centre_edges, "centre_edges"},
+    {Shape::subnormal, "subnormal"},
+    {Shape::sliver, "sliver"},
 }};
 
 }  // namespace
@@ -190,6 +215,8 @@ Scene make_scene(const SceneSpec& spec) {
         case Shape::mesh: mesh(spec, r, scene.triangles); break;
         case Shape::fan: fans(spec, r, scene.triangles); break;
         case Shape::centre_edges: centre_edges(spec, r, scene.triangles); break;
+        case Shape::subnormal: subnormals(spec, r, scene.triangles); break;
+        case Shape::sliver: slivers(spec, r, scene.triangles); break;
     }
     if (spec.on_grid_256) {
         for (Triangle& t : scene.triangles) {

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <chrono>
 #include <cstring>
 #include <exception>
@@ -15,7 +16,18 @@
 namespace rast::bench {
 namespace {
 
-// The child's reply on the pipe: 'T' and the raw doubles, or 'E' and an error message.
+template <typename T>
+void append_raw(std::string& bytes, const std::vector<T>& values) {
+    bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+}
+
+template <typename T>
+std::size_t take_raw(const std::string& bytes, std::size_t at, std::vector<T>& values) {
+    std::memcpy(values.data(), bytes.data() + at, values.size() * sizeof(T));
+    return at + values.size() * sizeof(T);
+}
+
+// The child's reply on the pipe: 'T', the raw seconds, ids and depths, or 'E' and an error message.
 std::string measure(const Scene& scene, int threads, std::size_t iterations) {
     try {
         peer::Llvmpipe llvmpipe(threads);
@@ -27,8 +39,11 @@ std::string measure(const Scene& scene, int threads, std::size_t iterations) {
             llvmpipe.draw();
             s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
-        std::string reply(1 + seconds.size() * sizeof(double), 'T');
-        std::memcpy(reply.data() + 1, seconds.data(), seconds.size() * sizeof(double));
+        const Framebuffer result = llvmpipe.read_ids();
+        std::string reply("T");
+        append_raw(reply, seconds);
+        append_raw(reply, result.ids);
+        append_raw(reply, result.depth);
         return reply;
     } catch (const std::exception& e) {
         return std::string("E") + e.what();
@@ -61,7 +76,7 @@ std::string read_all(int fd) {
 
 }  // namespace
 
-std::vector<double> time_llvmpipe_draws(const Scene& scene, int threads, std::size_t iterations) {
+LlvmpipeDraws time_llvmpipe_draws(const Scene& scene, int threads, std::size_t iterations) {
     int fds[2];
     if (pipe(fds) != 0) fail(std::string("pipe: ") + std::strerror(errno));
     const pid_t child = fork();
@@ -84,10 +99,14 @@ std::vector<double> time_llvmpipe_draws(const Scene& scene, int threads, std::si
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail("the child process died");
     if (reply.empty()) fail("no reply from the child process");
     if (reply[0] == 'E') fail(reply.substr(1));
-    if (reply.size() != 1 + iterations * sizeof(double)) fail("truncated reply from the child process");
-    std::vector<double> seconds(iterations);
-    std::memcpy(seconds.data(), reply.data() + 1, iterations * sizeof(double));
-    return seconds;
+    LlvmpipeDraws draws{std::vector<double>(iterations), Framebuffer(scene.viewport, 1)};
+    const std::size_t expected =
+        1 + iterations * sizeof(double) + draws.result.ids.size() * (sizeof(std::int32_t) + sizeof(double));
+    if (reply.size() != expected) fail("truncated reply from the child process");
+    std::size_t at = take_raw(reply, 1, draws.seconds);
+    at = take_raw(reply, at, draws.result.ids);
+    take_raw(reply, at, draws.result.depth);
+    return draws;
 }
 
 }  // namespace rast::bench

@@ -65,7 +65,8 @@ void llvmpipe(benchmark::State& state, SceneSpec spec, int threads) {
     std::vector<double> seconds;
     try {
         seconds = time_llvmpipe_draws(scene_for(spec), threads,
-                                      static_cast<std::size_t>(state.max_iterations));
+                                      static_cast<std::size_t>(state.max_iterations))
+                      .seconds;
         set_rates(state, spec);
     } catch (const std::exception& e) {
         state.SkipWithError(e.what());

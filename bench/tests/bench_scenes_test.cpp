@@ -125,6 +125,27 @@ TEST(BenchScenes, CentreEdgesLieOnTheHalfPixelLattice) {
     }
 }
 
+TEST(BenchScenes, SubnormalEdgesRunAlongTheLeftBorder) {
+    const SceneSpec spec{.shape = Shape::subnormal, .triangles = 1000, .viewport = {64, 32}};
+    for (const Triangle& t : make_scene(spec).triangles) {
+        for (int m = 0; m < 2; ++m) {
+            EXPECT_EQ(std::fpclassify(t.v[m].x), FP_SUBNORMAL);
+            EXPECT_EQ(t.v[m].y, m == 0 ? 0 : 32);
+        }
+        EXPECT_GE(t.v[2].x, 1);
+    }
+}
+
+TEST(BenchScenes, SliversHaveAlmostNoArea) {
+    for (const Triangle& t : make_scene({.shape = Shape::sliver, .triangles = 1000}).triangles) {
+        const double length = distance(t.v[0], t.v[1]);
+        EXPECT_GE(length, 16);
+        EXPECT_LE(length, 256);
+        // The apex is at most 2^-9 px off the long edge (plus the rounding of the midpoint).
+        EXPECT_LE(2 * area(t) / length, 0x1p-9 + 1e-9);
+    }
+}
+
 TEST(BenchScenes, GridSnapMovesVerticesOntoMultiplesOf1Over256) {
     const SceneSpec spec{.shape = Shape::needle, .triangles = 1000};
     SceneSpec snapped = spec;
@@ -159,7 +180,8 @@ TEST(BenchScenes, SeparatedDepthsGiveEachTriangleItsOwnBand) {
 
 TEST(BenchScenes, NamesRoundTripAndDescribeIsReadable) {
     for (const Shape s : {Shape::tiny, Shape::small, Shape::medium, Shape::large, Shape::needle,
-                          Shape::huge, Shape::mesh, Shape::fan, Shape::centre_edges}) {
+                          Shape::huge, Shape::mesh, Shape::fan, Shape::centre_edges, Shape::subnormal,
+                          Shape::sliver}) {
         EXPECT_EQ(parse_shape(name(s)), s);
     }
     EXPECT_EQ(parse_shape("enormous"), std::nullopt);

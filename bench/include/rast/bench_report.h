@@ -1,0 +1,77 @@
+// rast — the results of one `rast bench` run and the three ways they are written: a table for the
+// terminal, JSON, and an SVG plot of speed against error.
+#pragma once
+
+#include <rast/aa_error.h>
+#include <rast/scene.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rast::bench {
+
+struct Machine {
+    std::string cpu;      // model name from /proc/cpuinfo
+    unsigned cores = 0;   // online processors
+    double load_before = 0, load_after = 0;  // 1-minute load average at the start and the end
+    std::string date;     // UTC, ISO 8601
+};
+
+struct SceneInfo {
+    std::string name;
+    std::string description;  // how it was made: generator spec or mesh file and camera
+    std::size_t triangles = 0;
+    Viewport viewport;
+    int samples = 1;
+    std::uint64_t fragments = 0;  // samples covered before the depth test, counted by the reference
+};
+
+// Engines: "reference", the fast path's precision modes by name, "llvmpipe".
+struct SpeedRow {
+    std::string scene, engine;
+    int threads = 1;
+    double median = 0, min = 0, max = 0;  // seconds per render
+    std::size_t runs = 0;
+    double triangles_per_second = 0, samples_per_second = 0;  // from the median
+};
+
+struct ErrorRow {
+    std::string scene, engine;
+    std::uint64_t samples = 0;  // samples in the framebuffer
+    // From each triangle's covered samples; llvmpipe gives only its framebuffer, so none there.
+    std::optional<std::uint64_t> misclassified, triangles_affected;
+    std::uint64_t ids_differing = 0, depths_differing = 0;
+    std::optional<std::uint64_t> watertight_violations;  // scenes with shared edges only
+};
+
+struct AaRow {
+    std::string scene;
+    PatternError error;
+};
+
+struct Report {
+    Machine machine;
+    std::string command;
+    bool quick = false;
+    std::vector<SceneInfo> scenes;     // the speed and error scenes
+    std::vector<SpeedRow> speed;
+    std::vector<ErrorRow> errors;
+    std::vector<SceneInfo> hard_families;
+    std::vector<ErrorRow> hard_cases;  // scene = family
+    std::vector<SceneInfo> aa_scenes;
+    std::vector<AaRow> aa;
+    std::vector<std::pair<int, Discrepancy>> discrepancy;  // per sample count
+    std::vector<std::string> notes;    // what was skipped, and why
+};
+
+std::string format_table(const Report& report);  // Markdown tables, also what stdout shows
+std::string format_json(const Report& report);
+// Log-log: x the median triangles per second on one thread, y the fraction of samples whose id differs
+// from the reference; one labelled point per engine and scene, exact ones on a separate "0" row.
+std::string format_svg(const Report& report);
+
+}  // namespace rast::bench

@@ -1,0 +1,234 @@
+// The plan of `rast bench`: which scenes, which engines, how many runs; and the run itself. Timing is in
+// timing.h, error against the reference in engine_error.h and aa_error.h, formatting in report_*.cpp.
+#include <rast/bench_run.h>
+
+#include "engine_error.h"
+#include "llvmpipe_timing.h"
+#include "timing.h"
+
+#include <rast/bench_scenes.h>
+#include <rast/fast.h>
+#include <rast/mesh.h>
+#include <rast/reference.h>
+
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <ctime>
+#include <exception>
+#include <fstream>
+#include <ostream>
+#include <string>
+
+namespace rast::bench {
+namespace {
+
+constexpr std::array kModes{fast::Precision::fixed4, fast::Precision::fixed8, fast::Precision::fixed16,
+                            fast::Precision::float32, fast::Precision::float64};
+constexpr std::array kThreads{1, 2};
+constexpr std::array kSampleCounts{1, 4, 8, 16};
+
+// Sizes and repetitions. The reference is exact and single-threaded, so it gets fewer runs on the same
+// scenes: every engine renders exactly the same triangles.
+struct Plan {
+    Viewport viewport;
+    std::size_t scale;  // triangle counts are multiples of this
+    std::size_t runs, reference_runs;
+    Viewport hard_viewport;
+    std::size_t hard_triangles;
+    Viewport aa_viewport;
+    std::size_t aa_triangles;
+};
+
+Plan plan_for(bool quick) {
+    if (quick) return {{256, 256}, 1, 3, 1, {64, 64}, 100, {64, 64}, 20};
+    return {{1024, 1024}, 20, 9, 3, {256, 256}, 2000, {256, 256}, 300};
+}
+
+struct BenchScene {
+    SceneInfo info;
+    Scene scene;
+    bool shared_edges = false;  // a mesh, where watertightness is measured
+};
+
+BenchScene generated(std::string name, const SceneSpec& spec, int samples = 1) {
+    Scene scene = make_scene(spec);
+    scene.samples = samples;
+    const bool shared = spec.shape == Shape::mesh || spec.shape == Shape::fan;
+    return {{std::move(name), "generated " + describe(spec), scene.triangles.size(), spec.viewport, samples, 0},
+            std::move(scene),
+            shared};
+}
+
+BenchScene mesh_scene(const std::filesystem::path& path, Viewport vp, int samples) {
+    const Mesh mesh = read_mesh(path);
+    Scene scene = project(mesh, frame(mesh, vp), vp, samples);
+    return {{"bunny", path.filename().string() + ", projected by rast::frame's camera", scene.triangles.size(), vp,
+             samples, 0},
+            std::move(scene),
+            true};
+}
+
+// Depths are separated (each triangle its own band of z) on the speed scenes: llvmpipe's 24-bit depth
+// buffer would otherwise blur its id buffer with depth ties that have nothing to do with coverage.
+std::vector<BenchScene> main_scenes(const Config& config, const Plan& plan) {
+    const auto spec = [&](Shape shape, std::size_t triangles) {
+        return SceneSpec{.shape = shape, .triangles = triangles * plan.scale, .viewport = plan.viewport,
+                         .depth = Depth::separated};
+    };
+    std::vector<BenchScene> scenes;
+    scenes.push_back(generated("tiny", spec(Shape::tiny, 5000)));
+    scenes.push_back(generated("medium", spec(Shape::medium, 500)));
+    scenes.push_back(generated("large", spec(Shape::large, 50)));
+    scenes.push_back(generated("needle", spec(Shape::needle, 500)));
+    scenes.push_back(generated("huge", spec(Shape::huge, 100)));
+    scenes.push_back(mesh_scene(config.mesh, plan.viewport, 1));
+    scenes.push_back(generated("grid", spec(Shape::mesh, 5000)));
+    scenes.push_back(generated("fans", spec(Shape::fan, 1000)));
+    return scenes;
+}
+
+std::vector<BenchScene> hard_families(const Plan& plan) {
+    const auto spec = [&](Shape shape) {
+        return SceneSpec{.shape = shape, .triangles = plan.hard_triangles, .viewport = plan.hard_viewport,
+                         .depth = Depth::separated};
+    };
+    return {generated("needles", spec(Shape::needle)), generated("huge coordinates", spec(Shape::huge)),
+            generated("subnormals (16x)", spec(Shape::subnormal), 16),
+            generated("vertices on centres", spec(Shape::centre_edges)),
+            generated("near zero area", spec(Shape::sliver))};
+}
+
+SpeedRow speed_row(const SceneInfo& scene, std::string engine, int threads, std::vector<double> seconds) {
+    const Spread s = spread(std::move(seconds));
+    return {scene.name, std::move(engine), threads, s.median, s.min, s.max, s.runs,
+            static_cast<double>(scene.triangles) / s.median, static_cast<double>(scene.fragments) / s.median};
+}
+
+ErrorRow error_row(const SceneInfo& scene, std::string engine, const BufferDifference& buffers) {
+    ErrorRow row;
+    row.scene = scene.name;
+    row.engine = std::move(engine);
+    row.samples = static_cast<std::uint64_t>(scene.viewport.width) * static_cast<std::uint64_t>(scene.viewport.height) *
+                  static_cast<std::uint64_t>(scene.samples);
+    row.ids_differing = buffers.ids;
+    row.depths_differing = buffers.depths;
+    return row;
+}
+
+// Speed of every engine and thread count, then each one's error against the reference's framebuffer.
+// With `time` false (the hard cases) every engine renders once, untimed.
+void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& speed,
+             std::vector<ErrorRow>& errors, std::vector<std::string>& notes, std::ostream& progress) {
+    const Scene& scene = s.scene;
+    progress << "[" << s.info.name << "] " << scene.triangles.size() << " triangles: reference" << std::flush;
+    reference::Stats stats;
+    Framebuffer exact;
+    const auto reference_seconds = time_runs(
+        [&] {
+            stats = {};
+            exact = reference::render(scene, &stats);
+        },
+        time ? plan.reference_runs : 1);
+    s.info.fragments = stats.samples_covered;
+    if (time) speed.push_back(speed_row(s.info, "reference", 1, reference_seconds));
+
+    std::vector<ErrorRow> rows;
+    for (const fast::Precision mode : kModes) {
+        progress << ", " << fast::name(mode) << std::flush;
+        const Framebuffer result = fast::render(scene, {mode, 1});  // also the warm-up
+        rows.push_back(error_row(s.info, std::string(fast::name(mode)), compare_buffers(exact, result)));
+        for (const int threads : kThreads) {
+            if (!time) break;
+            speed.push_back(speed_row(s.info, std::string(fast::name(mode)), threads,
+                                      time_runs([&] { fast::render(scene, {mode, threads}); }, plan.runs)));
+        }
+    }
+    progress << ", coverage" << std::flush;
+    const auto coverage = compare_coverage(scene, kModes, s.shared_edges);
+    for (std::size_t m = 0; m < kModes.size(); ++m) {
+        rows[m].misclassified = coverage[m].samples;
+        rows[m].triangles_affected = coverage[m].triangles;
+        rows[m].watertight_violations = coverage[m].watertight;
+    }
+    if (scene.samples == 1) {
+        progress << ", llvmpipe" << std::flush;
+        try {
+            for (const int threads : kThreads) {
+                LlvmpipeDraws draws = time_llvmpipe_draws(scene, threads, time ? plan.runs : 1);
+                if (time) speed.push_back(speed_row(s.info, "llvmpipe", threads, std::move(draws.seconds)));
+                if (threads == kThreads.front()) rows.push_back(error_row(s.info, "llvmpipe", compare_buffers(exact, draws.result)));
+                if (!time) break;
+            }
+        } catch (const std::exception& e) {
+            notes.push_back("llvmpipe skipped on " + s.info.name + ": " + e.what());
+            progress << " (skipped: " << e.what() << ")";
+        }
+    }
+    errors.insert(errors.end(), rows.begin(), rows.end());
+    progress << '\n';
+}
+
+double load_average() {
+    std::ifstream in("/proc/loadavg");
+    double load = 0;
+    in >> load;
+    return load;
+}
+
+std::string cpu_model() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+    }
+    return "unknown";
+}
+
+std::string utc_now() {
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
+
+}  // namespace
+
+Report run_bench(const Config& config, std::ostream& progress) {
+    const Plan plan = plan_for(config.quick);
+    Report report;
+    report.command = config.command;
+    report.quick = config.quick;
+    report.machine = {cpu_model(), static_cast<unsigned>(sysconf(_SC_NPROCESSORS_ONLN)), load_average(), 0,
+                      utc_now()};
+    if (config.speed) {
+        for (BenchScene& s : main_scenes(config, plan)) {
+            measure(s, plan, true, report.speed, report.errors, report.notes, progress);
+            report.scenes.push_back(s.info);
+        }
+    }
+    if (config.hard) {
+        for (BenchScene& s : hard_families(plan)) {
+            measure(s, plan, false, report.speed, report.hard_cases, report.notes, progress);
+            report.hard_families.push_back(s.info);
+        }
+    }
+    if (config.aa) {
+        const SceneSpec small{.shape = Shape::small, .triangles = plan.aa_triangles, .viewport = plan.aa_viewport};
+        const SceneSpec sliver{.shape = Shape::sliver, .triangles = plan.aa_triangles, .viewport = plan.aa_viewport};
+        std::vector<BenchScene> scenes{generated("small", small), generated("near zero area", sliver),
+                                       mesh_scene(config.mesh, plan.aa_viewport, 1)};
+        for (BenchScene& s : scenes) {
+            progress << "[antialiasing] " << s.info.name << '\n';
+            for (const PatternError& e : pattern_errors(s.scene, kSampleCounts)) report.aa.push_back({s.info.name, e});
+            report.aa_scenes.push_back(s.info);
+        }
+        for (const int n : kSampleCounts) report.discrepancy.emplace_back(n, halfplane_discrepancy(sample_pattern(n)));
+    }
+    report.machine.load_after = load_average();
+    return report;
+}
+
+}  // namespace rast::bench

@@ -1,0 +1,117 @@
+// The report as Markdown tables: what `rast bench` prints and what docs/bench.md shows.
+#include <rast/bench_report.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace rast::bench {
+namespace {
+
+std::string number(double value, const char* format = "%.3g") {
+    char text[64];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+std::string count(const std::optional<std::uint64_t>& value) {
+    return value ? std::to_string(*value) : "—";
+}
+
+std::string row(std::initializer_list<std::string> cells) {
+    std::string line = "|";
+    for (const std::string& cell : cells) line += " " + cell + " |";
+    return line + "\n";
+}
+
+std::string scenes_table(const std::vector<SceneInfo>& scenes) {
+    std::string out = row({"scene", "triangles", "viewport", "samples/pixel", "covered samples", "made by"}) +
+                      row({"---", "---:", "---", "---:", "---:", "---"});
+    for (const SceneInfo& s : scenes) {
+        out += row({s.name, std::to_string(s.triangles),
+                    std::to_string(s.viewport.width) + "×" + std::to_string(s.viewport.height),
+                    std::to_string(s.samples), std::to_string(s.fragments), s.description});
+    }
+    return out;
+}
+
+std::string errors_table(const std::vector<ErrorRow>& errors, const char* scene_heading) {
+    std::string out = row({scene_heading, "engine", "samples", "misclassified samples", "triangles affected",
+                           "ids differing", "depths differing", "watertight violations"}) +
+                      row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:"});
+    for (const ErrorRow& e : errors) {
+        out += row({e.scene, e.engine, std::to_string(e.samples), count(e.misclassified),
+                    count(e.triangles_affected), std::to_string(e.ids_differing),
+                    std::to_string(e.depths_differing), count(e.watertight_violations)});
+    }
+    return out;
+}
+
+// Ratios from medians of the same run: against the reference, and against llvmpipe on as many threads.
+std::string speed_table(const std::vector<SpeedRow>& speed) {
+    std::map<std::string, double> reference, llvmpipe;
+    for (const SpeedRow& s : speed) {
+        if (s.engine == "reference") reference[s.scene] = s.median;
+        if (s.engine == "llvmpipe") llvmpipe[s.scene + "/" + std::to_string(s.threads)] = s.median;
+    }
+    const auto ratio = [](const std::map<std::string, double>& base, const std::string& key, double median) {
+        const auto it = base.find(key);
+        return it == base.end() ? std::string("—") : number(it->second / median) + "×";
+    };
+    std::string out = row({"scene", "engine", "threads", "runs", "median ms", "min–max ms", "M triangles/s",
+                           "M samples/s", "vs reference", "vs llvmpipe"}) +
+                      row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:", "---:"});
+    for (const SpeedRow& s : speed) {
+        out += row({s.scene, s.engine, std::to_string(s.threads), std::to_string(s.runs),
+                    number(s.median * 1e3), number(s.min * 1e3) + "–" + number(s.max * 1e3),
+                    number(s.triangles_per_second / 1e6), number(s.samples_per_second / 1e6),
+                    ratio(reference, s.scene, s.median),
+                    ratio(llvmpipe, s.scene + "/" + std::to_string(s.threads), s.median)});
+    }
+    return out;
+}
+
+std::string aa_tables(const Report& report) {
+    std::string out = row({"scene", "samples/pixel", "pixels", "mean |error|", "worst |error|"}) +
+                      row({"---", "---:", "---:", "---:", "---:"});
+    for (const AaRow& a : report.aa) {
+        out += row({a.scene, std::to_string(a.error.samples), std::to_string(a.error.pixels),
+                    number(a.error.mean, "%.4f"), number(a.error.worst, "%.4f")});
+    }
+    out += "\n" + row({"samples/pixel", "halfplane discrepancy", "worst half-plane (n · p ≤ c)", "resolution"}) +
+           row({"---:", "---:", "---", "---:"});
+    for (const auto& [n, d] : report.discrepancy) {
+        out += row({std::to_string(n), number(d.value, "%.5f"),
+                    "n = (" + number(d.normal_x, "%.4g") + ", " + number(d.normal_y, "%.4g") + "), c = " +
+                        number(d.offset, "%.4g"),
+                    number(d.resolution, "%.1e")});
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string format_table(const Report& report) {
+    const Machine& m = report.machine;
+    std::string out = "Machine: " + m.cpu + ", " + std::to_string(m.cores) + " cores, load average " +
+                      number(m.load_before, "%.2f") + " at the start and " + number(m.load_after, "%.2f") +
+                      " at the end; " + m.date + (report.quick ? "; --quick" : "") + "\n";
+    if (!report.command.empty()) out += "Command: `" + report.command + "`\n";
+    if (!report.scenes.empty()) {
+        out += "\n### Scenes\n\n" + scenes_table(report.scenes);
+        out += "\n### Speed\n\n" + speed_table(report.speed);
+        out += "\n### Error against the exact reference\n\n" + errors_table(report.errors, "scene");
+    }
+    if (!report.hard_cases.empty()) {
+        out += "\n### Hard cases\n\n" + scenes_table(report.hard_families) + "\n" +
+               errors_table(report.hard_cases, "family");
+    }
+    if (!report.aa.empty()) {
+        out += "\n### Antialiasing: sample patterns against the exact area\n\n" + scenes_table(report.aa_scenes) +
+               "\n" + aa_tables(report);
+    }
+    for (const std::string& note : report.notes) out += "\nNote: " + note + "\n";
+    return out;
+}
+
+}  // namespace rast::bench

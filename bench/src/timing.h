@@ -1,0 +1,31 @@
+// Repeated wall-clock timing: the median and the spread of a run.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <vector>
+
+namespace rast::bench {
+
+// Seconds over repeated runs. The median is what ratios use; min and max show how noisy the machine was.
+struct Spread {
+    double median = 0, min = 0, max = 0;
+    std::size_t runs = 0;
+};
+
+// Throws std::invalid_argument for an empty list.
+Spread spread(std::vector<double> seconds);
+
+// The wall time of each of `runs` calls of `run`.
+template <typename Run>
+std::vector<double> time_runs(Run&& run, std::size_t runs) {
+    std::vector<double> seconds;
+    for (std::size_t k = 0; k < runs; ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        run();
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return seconds;
+}
+
+}  // namespace rast::bench

@@ -1,0 +1,64 @@
+// Differences from the reference, on scenes whose differences are known by hand.
+#include "engine_error.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+namespace rast::bench {
+namespace {
+
+using fast::Precision;
+
+constexpr std::array kModes{Precision::fixed4, Precision::fixed8, Precision::fixed16, Precision::float32,
+                            Precision::float64};
+
+Triangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
+    return Triangle{{Vertex{x0, y0, 0}, Vertex{x1, y1, 0}, Vertex{x2, y2, 0}}};
+}
+
+TEST(CompareBuffers, CountsIdsAndDepthBitsSeparately) {
+    Framebuffer a({3, 1}, 1), b({3, 1}, 1);
+    a.ids = {0, 1, -1};
+    b.ids = {0, 2, -1};
+    a.depth = {0.5, 0.25, 1.0 / 0.0};
+    b.depth = {0.5000000000000001, 0.25, 1.0 / 0.0};
+    const BufferDifference d = compare_buffers(a, b);
+    EXPECT_EQ(d.ids, 1u);
+    EXPECT_EQ(d.depths, 1u);
+}
+
+// A vertical left edge at x = 17/32, just right of the centre of pixel (0, 0): the reference leaves that
+// centre out. fixed4 snaps 17/32 = 8.5/16 to 8/16 (ties to even): the edge runs through the centre, and
+// as a left edge covers it. 17/32 is on the grids of fixed8 and fixed16 and exact in float.
+TEST(CompareCoverage, FixedFourSnapsAnEdgeOverACentre) {
+    const Scene scene{{2, 1}, 1, {tri(17.0 / 32, -4, 4, 0.5, 17.0 / 32, 4)}};
+    const auto d = compare_coverage(scene, kModes, true);
+    ASSERT_EQ(d.size(), kModes.size());
+    EXPECT_EQ(d[0].samples, 1u);
+    EXPECT_EQ(d[0].triangles, 1u);
+    for (std::size_t m = 1; m < kModes.size(); ++m) {
+        EXPECT_EQ(d[m].samples, 0u) << fast::name(kModes[m]);
+        EXPECT_EQ(d[m].triangles, 0u) << fast::name(kModes[m]);
+    }
+    // Snapped or not, each mode covers what the exact rule gives its own geometry: no violation.
+    for (const CoverageDifference& c : d) EXPECT_EQ(c.watertight, 0u);
+}
+
+TEST(CompareCoverage, SplitSquareIsWatertightWithBorderSamplesOnce) {
+    // A 4 x 4 square split along a diagonal through pixel centres' rows, with 16 samples: every sample of
+    // its pixels covered once by exactly one of the two triangles, in every mode (vertices on every grid).
+    const Scene scene{{4, 4}, 16, {tri(0, 0, 4, 0, 4, 4), tri(0, 0, 4, 4, 0, 4)}};
+    for (const CoverageDifference& c : compare_coverage(scene, kModes, true)) {
+        EXPECT_EQ(c.samples, 0u);
+        EXPECT_EQ(c.watertight, 0u);
+    }
+}
+
+TEST(CompareCoverage, WatertightnessOnlyWhenAsked) {
+    const Scene scene{{2, 2}, 1, {tri(0, 0, 2, 0, 0, 2)}};
+    for (const CoverageDifference& c : compare_coverage(scene, kModes, false)) EXPECT_FALSE(c.watertight);
+}
+
+}  // namespace
+}  // namespace rast::bench
