@@ -224,7 +224,7 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------------------
-// Depth: interval filter first, exact rationals when it cannot decide.
+// Depth: an interval filter first, exact integer fractions (exact_depth.h) when it cannot decide.
 
 // Interval_nt_advanced computes enclosures only while the rounding mode is upward; these two functions
 // are the only places it is used, and each sets and restores the mode.
