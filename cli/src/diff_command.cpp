@@ -1,0 +1,116 @@
+// rast diff: the reference and the fast path side by side, with the samples where they disagree marked.
+// A difference is information about a precision mode, not an error: the exit status is 0.
+#include "commands.h"
+#include "engine_choice.h"
+#include "png_image.h"
+#include "scene_input.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace rast::cli {
+namespace {
+
+struct DiffOptions {
+    std::string scene_path;
+    EngineChoice engine{.engine = "fast"};
+    MeshView view;
+    std::optional<int> samples;
+    std::string image_out;
+};
+
+// Small viewports are magnified (nearest neighbour) until the longer side is at least this many
+// picture pixels, so that single pixels are visible.
+constexpr int kMinimumSide = 512;
+constexpr std::array<std::uint8_t, 3> kDisagree{255, 0, 255};
+constexpr std::array<std::uint8_t, 3> kSeparator{128, 128, 128};
+
+// Where the two agree, the reference dimmed to a quarter; where any sample differs, the loud colour,
+// as strong as the share of samples that differ (but never fainter than half).
+Image disagreement(const Framebuffer& a, const Framebuffer& b, const Image& reference) {
+    Image out = reference;
+    for (int j = 0; j < a.viewport.height; ++j)
+        for (int i = 0; i < a.viewport.width; ++i) {
+            int differing = 0;
+            for (int s = 0; s < a.samples; ++s) differing += a.id(i, j, s) != b.id(i, j, s);
+            std::uint8_t* px = out.at(i, a.viewport.height - 1 - j);
+            const double share = differing == 0 ? 0 : 0.5 + 0.5 * double(differing) / a.samples;
+            for (int k = 0; k < 3; ++k)
+                px[k] = static_cast<std::uint8_t>(share * kDisagree[k] + (1 - share) * px[k] / 4);
+        }
+    return out;
+}
+
+// The panels left to right, each magnified by `scale`, with a separator of `scale` pixels between.
+Image side_by_side(const std::vector<Image>& panels, int scale) {
+    const int w = panels.front().width, h = panels.front().height;
+    const int n = static_cast<int>(panels.size());
+    Image out(n * w * scale + (n - 1) * scale, h * scale);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            const int panel = x / ((w + 1) * scale), inside = x % ((w + 1) * scale);
+            std::uint8_t* px = out.at(x, y);
+            if (inside >= w * scale) {
+                std::copy(kSeparator.begin(), kSeparator.end(), px);
+                continue;
+            }
+            const auto& from = panels[panel];
+            const std::uint8_t* src = &from.rgb[(static_cast<std::size_t>(y / scale) * w + inside / scale) * 3];
+            std::copy(src, src + 3, px);
+        }
+    return out;
+}
+
+void run_diff(const DiffOptions& o) {
+    Scene scene = load_scene(o.scene_path, o.view);
+    if (o.samples) scene.samples = *o.samples;
+    const Framebuffer exact = render(scene, EngineChoice{.engine = "reference"});
+    const Framebuffer fast = render(scene, o.engine);
+
+    std::size_t samples = 0, pixels = 0;
+    const Viewport vp = scene.viewport;
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i) {
+            int differing = 0;
+            for (int s = 0; s < scene.samples; ++s) differing += exact.id(i, j, s) != fast.id(i, j, s);
+            samples += differing;
+            pixels += differing > 0;
+        }
+    std::cout << "scene:  " << o.scene_path << ": " << scene.triangles.size() << " triangles, " << vp.width << "x"
+              << vp.height << ", " << scene.samples << " sample(s) per pixel\n"
+              << "compare: reference (exact) vs " << o.engine.describe() << '\n'
+              << "differing samples: " << samples << " of " << exact.ids.size() << '\n'
+              << "differing pixels: " << pixels << " of " << std::size_t(vp.width) * vp.height << '\n';
+    if (o.image_out.empty()) return;
+    const Image reference = resolve_ids(exact);
+    const int scale = std::max(1, (kMinimumSide + std::max(vp.width, vp.height) - 1) / std::max(vp.width, vp.height));
+    write_png(o.image_out, side_by_side({reference, resolve_ids(fast), disagreement(exact, fast, reference)}, scale));
+    std::cout << "wrote " << o.image_out << " (reference | " << o.engine.describe()
+              << " | disagreeing pixels in magenta), magnified " << scale << "x\n";
+}
+
+}  // namespace
+
+void add_diff_command(CLI::App& app) {
+    auto o = std::make_shared<DiffOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "diff",
+        "Render a scene with the exact reference and with the fast path, count the samples and pixels where\n"
+        "their id buffers disagree, and optionally draw both side by side with a third panel marking the\n"
+        "disagreeing pixels in magenta (small viewports magnified). A difference is information about a\n"
+        "precision mode, not an error: the exit status is 0 whatever the count.");
+    cmd->add_option("SCENE", o->scene_path, "A .tri scene or a mesh file")->required()->check(CLI::ExistingFile);
+    add_engine_options(*cmd, o->engine);
+    cmd->remove_option(cmd->get_option("--engine"));  // one side is always the reference, the other the fast path
+    cmd->add_option("--samples", o->samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+    cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG");
+    add_mesh_view_options(*cmd, o->view);
+    cmd->callback([o] { run_diff(*o); });
+}
+
+}  // namespace rast::cli
