@@ -1,0 +1,103 @@
+// The replay core against a deliberately broken fast path: a case that a failing property writes fails the
+// same way when replayed, and passes once the engine is fixed.
+#include "replay.h"
+
+#include <rast/fast_faults.h>
+#include <rast/tri_format.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+using rast::cli::CaseReport;
+
+// fixed8 with bottom instead of top edges owning their samples.
+rast::properties::Engine broken_fixed8() {
+    using rast::fast::Fault;
+    using rast::fast::Precision;
+    rast::properties::Engine engine = rast::properties::fast_engine(Precision::fixed8);
+    engine.render = [](const rast::Scene& s) {
+        return rast::fast::render_with_fault(s, {Precision::fixed8, 1}, Fault::wrong_tie_bias);
+    };
+    engine.covered_samples = [](const rast::Triangle& t, rast::Viewport vp, int n) {
+        return rast::fast::covered_samples_with_fault(t, vp, n, Precision::fixed8, Fault::wrong_tie_bias);
+    };
+    return engine;
+}
+
+// Two triangles sharing the horizontal line y = 1.5 through the centres (0.5, 1.5) .. (3.5, 1.5): the
+// lower triangle's top edge owns them; the broken engine gives them to the upper triangle's bottom edge.
+rast::Scene horizontal_split() {
+    rast::Scene scene;
+    scene.viewport = {4, 3};
+    scene.triangles = {{{{{0.25, 1.5, 0}, {3.75, 1.5, 0}, {2, 2.75, 0}}}},
+                       {{{{0.25, 1.5, 0}, {2, 0.25, 0}, {3.75, 1.5, 0}}}}};
+    return scene;
+}
+
+class Replay : public ::testing::Test {
+protected:
+    fs::path dir = fs::temp_directory_path() / "rast_replay_test";
+    void SetUp() override {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+};
+
+TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix) {
+    const rast::properties::Engine broken = broken_fixed8();
+    const auto outcome = rast::properties::property("tie_rule").check(horizontal_split(), broken);
+    ASSERT_TRUE(outcome.failed());
+
+    const fs::path file = dir / "tie_rule-broken.tri";
+    rast::write_tri_file(file, horizontal_split(),
+                         {{"properties", "tie_rule"}, {"why", "bottom edges own samples in the broken engine"}});
+
+    const std::vector<rast::properties::Engine> with_bug{rast::properties::reference_engine(), broken};
+    const CaseReport failing = rast::cli::replay_case(file, with_bug);
+    ASSERT_EQ(failing.status, CaseReport::Status::fail) << failing.line;
+    ASSERT_EQ(failing.failures.size(), 1u);
+    EXPECT_EQ(failing.failures[0].property, "tie_rule");
+    EXPECT_EQ(failing.failures[0].engine, "fixed8");
+    EXPECT_EQ(failing.failures[0].detail, outcome.detail);
+    EXPECT_EQ(failing.line, "FAIL " + file.string() + " tie_rule [fixed8]: " + outcome.detail);
+    // The first differing sample is the centre (0.5, 1.5): on the shared line, owned by the lower triangle.
+    EXPECT_NE(failing.line.find("at (0.5, 1.5)"), std::string::npos) << failing.line;
+
+    const CaseReport fixed = rast::cli::replay_case(file, rast::properties::all_engines());
+    EXPECT_EQ(fixed.status, CaseReport::Status::pass) << fixed.line;
+    // tie_rule applies to the exact engines: the reference and the three fixed modes.
+    EXPECT_EQ(fixed.line, "PASS " + file.string() + " (1 properties x 6 engines: 4 checks, 0 not applicable)");
+}
+
+TEST_F(Replay, HeaderErrorsNameTheLine) {
+    std::ofstream(dir / "unknown.tri") << "# why: a typo\n# properties: tie_rule watertigt\nviewport 2 2\n";
+    std::ofstream(dir / "twice.tri") << "# properties: tie_rule tie_rule\nviewport 2 2\n";
+    std::ofstream(dir / "none.tri") << "# why: forgot the properties\nviewport 2 2\n";
+    const auto engines = rast::properties::all_engines();
+
+    const CaseReport unknown = rast::cli::replay_case(dir / "unknown.tri", engines);
+    EXPECT_EQ(unknown.status, CaseReport::Status::error);
+    EXPECT_EQ(unknown.line.rfind("ERROR " + (dir / "unknown.tri").string() + ":2: unknown property 'watertigt'", 0),
+              0u)
+        << unknown.line;
+    EXPECT_EQ(rast::cli::replay_case(dir / "twice.tri", engines).line,
+              "ERROR " + (dir / "twice.tri").string() + ":1: property 'tie_rule' is named twice");
+    EXPECT_EQ(rast::cli::replay_case(dir / "none.tri", engines).line,
+              "ERROR " + (dir / "none.tri").string() +
+                  ":1: no '# properties:' header naming the properties that apply");
+}
+
+TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
+    fs::create_directories(dir / "b");
+    for (const char* name : {"b/z.tri", "b/a.tri", "a.tri", "notes.txt"}) std::ofstream(dir / name) << "\n";
+    const std::vector<fs::path> given{dir / "b", dir / "a.tri"};
+    EXPECT_EQ(rast::cli::corpus_files(given), (std::vector<fs::path>{dir / "b/a.tri", dir / "b/z.tri", dir / "a.tri"}));
+}
+
+}  // namespace
