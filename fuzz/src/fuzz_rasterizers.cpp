@@ -1,5 +1,5 @@
 // libFuzzer harness: both rasterizers fed fuzzed coordinates. Bytes decode to a scene of 1-4 triangles
-// in a viewport of at most 72 x 72 pixels (scene_bytes.h), with coordinates from +-0 and subnormals to
+// in a viewport of up to 16 or, straddling a tile border, 57..72 pixels a side (scene_bytes.h), with coordinates from +-0 and subnormals to
 // +-DBL_MAX. Oracles, besides no crash, no UB, no hang and no exception other than those named:
 //   - a non-finite coordinate: every engine throws std::invalid_argument naming the first bad triangle;
 //   - fixed4 / fixed8 / fixed16: the id buffer equals the reference's on the snapped scene (fast::snap);

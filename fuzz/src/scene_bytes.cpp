@@ -61,11 +61,15 @@ void encode_coordinate(double value, std::vector<std::uint8_t>& out) {
     for (int k = 0; k < 8; ++k) out.push_back(static_cast<std::uint8_t>(bits >> (8 * k)));
 }
 
+int decode_side(std::uint8_t b) { return b < kWideSideByte ? 1 + b % kSmallSide : kWideSide + (b - kWideSideByte); }
+
 std::uint8_t side_byte(int side, const char* which) {
-    if (side < 1 || side > kMaxSide)
-        throw std::invalid_argument(std::string("encode_scene: viewport ") + which + " " + std::to_string(side) +
-                                    " is outside 1.." + std::to_string(kMaxSide));
-    return static_cast<std::uint8_t>(side - 1);
+    if (side >= 1 && side <= kSmallSide) return static_cast<std::uint8_t>(side - 1);
+    if (side >= kWideSide && side < kWideSide + (256 - kWideSideByte))
+        return static_cast<std::uint8_t>(kWideSideByte + (side - kWideSide));
+    throw std::invalid_argument(std::string("encode_scene: viewport ") + which + " " + std::to_string(side) +
+                                " is neither 1.." + std::to_string(kSmallSide) + " nor " + std::to_string(kWideSide) +
+                                ".." + std::to_string(kWideSide + 255 - kWideSideByte));
 }
 
 }  // namespace
@@ -73,8 +77,8 @@ std::uint8_t side_byte(int side, const char* which) {
 Scene decode_scene(std::span<const std::uint8_t> bytes) {
     ByteReader in(bytes);
     Scene scene;
-    scene.viewport.width = in.byte() % kMaxSide + 1;
-    scene.viewport.height = in.byte() % kMaxSide + 1;
+    scene.viewport.width = decode_side(in.byte());
+    scene.viewport.height = decode_side(in.byte());
     scene.samples = kSampleCounts[in.byte() & 3];
     while (!in.empty() && scene.triangles.size() < kMaxTriangles) {
         Triangle t;

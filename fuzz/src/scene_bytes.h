@@ -3,7 +3,9 @@
 // and the inverse encoding, so that .tri scenes of the corpus seed the fuzzer.
 //
 // Layout, read from the front; a missing byte reads as 0, so every byte string is a scene:
-//   width-1 (mod kMaxSide), height-1 (mod kMaxSide), samples (low 2 bits: 1, 4, 8, 16),
+//   width, height (a side byte b < kWideSideByte is 1 + b % kSmallSide, so most scenes are small and fast;
+//   above, the sides kWideSide..kWideSide+15, which straddle the fast path's 64-pixel tile border),
+//   samples (low 2 bits: 1, 4, 8, 16),
 //   then up to kMaxTriangles triangles while bytes remain, each 9 coordinates x0 y0 z0 x1 ... z2.
 // A coordinate is a tag byte, then:
 //   tag < kSpecialCount:       kSpecials[tag], no payload;
@@ -21,7 +23,9 @@
 
 namespace rast::fuzz {
 
-inline constexpr int kMaxSide = 72;  // just over one 64-pixel tile of the fast path, so tile borders occur
+inline constexpr int kSmallSide = 16;
+inline constexpr std::uint8_t kWideSideByte = 240;
+inline constexpr int kWideSide = 57;
 inline constexpr std::size_t kMaxTriangles = 4;
 inline constexpr std::uint8_t kSpecialCount = 16;
 inline constexpr std::uint8_t kGridTagEnd = 128;
@@ -30,7 +34,7 @@ inline constexpr std::uint8_t kRawTag = 255;
 Scene decode_scene(std::span<const std::uint8_t> bytes);
 
 // The shortest bytes that decode to `scene`. Throws std::invalid_argument if it cannot be represented:
-// a side outside 1..kMaxSide, more than kMaxTriangles triangles, or an unsupported sample count.
+// a side that is neither 1..kSmallSide nor kWideSide..kWideSide+15, more than kMaxTriangles triangles, or an unsupported sample count.
 std::vector<std::uint8_t> encode_scene(const Scene& scene);
 
 }  // namespace rast::fuzz

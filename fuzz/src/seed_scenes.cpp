@@ -1,5 +1,5 @@
 // fuzz_seed_scenes OUT_DIR SCENE.tri... — turns .tri scenes (the corpus) into seeds for the rasterizer
-// fuzzer: each scene's viewport is cropped to the fuzzer's largest side and its triangles are taken four
+// fuzzer: each scene's viewport is cropped to the fuzzer's small sides (its corner at the origin) and its triangles are taken four
 // at a time, each group one seed file (scene_bytes.h), written atomically. Bad input is reported with
 // its file and line, and the exit status is 1.
 #include "scene_bytes.h"
@@ -20,8 +20,8 @@ namespace {
 std::size_t write_seeds(const std::filesystem::path& scene_file, int position, const std::filesystem::path& out_dir) {
     const rast::Scene scene = rast::read_tri_file(scene_file);
     rast::Scene part;
-    part.viewport = {std::min(scene.viewport.width, rast::fuzz::kMaxSide),
-                     std::min(scene.viewport.height, rast::fuzz::kMaxSide)};
+    part.viewport = {std::min(scene.viewport.width, rast::fuzz::kSmallSide),
+                     std::min(scene.viewport.height, rast::fuzz::kSmallSide)};
     part.samples = scene.samples;
     constexpr std::size_t group = rast::fuzz::kMaxTriangles;
     std::size_t written = 0;

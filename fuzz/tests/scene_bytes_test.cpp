@@ -56,9 +56,9 @@ TEST(SceneBytes, DecodesEachKindOfCoordinate) {
 }
 
 TEST(SceneBytes, SidesWrapAndMissingBytesReadAsZero) {
-    // Side bytes 72 and 71: 72 % 72 + 1 = 1 and 71 + 1 = 72; samples 0b111 -> 16; one tag 12 (2^60),
-    // then the input ends: the other eight coordinates read tag 0, which is 0.0.
-    const Scene s = decode_scene(Bytes{72, 71, 7, 12});
+    // Side bytes 16 and 255: 16 % 16 + 1 = 1 and 57 + (255 - 240) = 72; samples 0b111 -> 16; one tag 12
+    // (2^60), then the input ends: the other eight coordinates read tag 0, which is 0.0.
+    const Scene s = decode_scene(Bytes{16, 255, 7, 12});
     EXPECT_EQ(s.viewport, (Viewport{1, 72}));
     EXPECT_EQ(s.samples, 16);
     ASSERT_EQ(s.triangles.size(), 1u);
@@ -69,6 +69,13 @@ TEST(SceneBytes, AtMostFourTriangles) {
     Bytes bytes = {0, 0, 0};
     bytes.resize(3 + 5 * 9, 6);  // five triangles of 0.5 (special 6)
     EXPECT_EQ(decode_scene(bytes).triangles.size(), 4u);
+}
+
+TEST(SceneBytes, WideSidesStraddleTheTileBorder) {
+    EXPECT_EQ(decode_scene(Bytes{239, 240}).viewport, (Viewport{16, 57}));
+    Scene s;
+    s.viewport = {64, 65};
+    EXPECT_EQ(encode_scene(s), (Bytes{247, 248, 0}));
 }
 
 TEST(SceneBytes, EncodesWithTheShortestTag) {
@@ -90,8 +97,10 @@ TEST(SceneBytes, EncodesWithTheShortestTag) {
 
 TEST(SceneBytes, EncodingRejectsWhatTheFuzzerCannotHold) {
     Scene s;
-    s.viewport = {73, 1};
-    EXPECT_THROW(encode_scene(s), std::invalid_argument);
+    for (const int side : {0, 17, 56, 73}) {
+        s.viewport = {side, 1};
+        EXPECT_THROW(encode_scene(s), std::invalid_argument) << side;
+    }
     s.viewport = {1, 1};
     s.samples = 2;
     EXPECT_THROW(encode_scene(s), std::invalid_argument);
