@@ -56,7 +56,7 @@ BenchScene generated(std::string name, const SceneSpec& spec, int samples = 1) {
     Scene scene = make_scene(spec);
     scene.samples = samples;
     const bool shared = spec.shape == Shape::mesh || spec.shape == Shape::fan;
-    return {{std::move(name), "generated " + describe(spec), scene.triangles.size(), spec.viewport, samples, 0},
+    return {{std::move(name), "generated " + describe(spec), scene.triangles.size(), spec.viewport, samples, {}},
             std::move(scene),
             shared};
 }
@@ -65,7 +65,7 @@ BenchScene mesh_scene(const std::filesystem::path& path, Viewport vp, int sample
     const Mesh mesh = read_mesh(path);
     Scene scene = project(mesh, frame(mesh, vp), vp, samples);
     return {{"bunny", path.filename().string() + ", projected by rast::frame's camera", scene.triangles.size(), vp,
-             samples, 0},
+             samples, {}},
             std::move(scene),
             true};
 }
@@ -103,7 +103,7 @@ std::vector<BenchScene> hard_families(const Plan& plan) {
 SpeedRow speed_row(const SceneInfo& scene, std::string engine, int threads, std::vector<double> seconds) {
     const Spread s = spread(std::move(seconds));
     return {scene.name, std::move(engine), threads, s.median, s.min, s.max, s.runs,
-            static_cast<double>(scene.triangles) / s.median, static_cast<double>(scene.fragments) / s.median};
+            static_cast<double>(scene.triangles) / s.median, static_cast<double>(scene.fragments.value_or(0)) / s.median};
 }
 
 ErrorRow error_row(const SceneInfo& scene, std::string engine, const BufferDifference& buffers) {
@@ -114,6 +114,7 @@ ErrorRow error_row(const SceneInfo& scene, std::string engine, const BufferDiffe
                   static_cast<std::uint64_t>(scene.samples);
     row.ids_differing = buffers.ids;
     row.depths_differing = buffers.depths;
+    row.worst_depth_error = buffers.worst_depth;
     return row;
 }
 

@@ -2,7 +2,9 @@
 
 #include <rast/reference.h>
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 
 namespace rast::bench {
@@ -44,6 +46,9 @@ BufferDifference compare_buffers(const Framebuffer& reference, const Framebuffer
         d.depths += std::bit_cast<std::uint64_t>(reference.depth[k]) != std::bit_cast<std::uint64_t>(other.depth[k])
                         ? 1
                         : 0;
+        if (reference.ids[k] == other.ids[k] && reference.ids[k] != Framebuffer::kNoTriangle) {
+            d.worst_depth = std::max(d.worst_depth, std::abs(reference.depth[k] - other.depth[k]));
+        }
     }
     return d;
 }

@@ -14,6 +14,7 @@ namespace rast::bench {
 struct BufferDifference {
     std::uint64_t ids = 0;     // samples whose triangle id differs
     std::uint64_t depths = 0;  // samples whose depth differs bit for bit
+    double worst_depth = 0;    // the largest |depth difference| where both hold the same triangle
 };
 
 // `reference` is the reference's framebuffer: its depths are the exact depths rounded to nearest.

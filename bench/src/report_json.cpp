@@ -15,7 +15,7 @@ json scenes_json(const std::vector<SceneInfo>& scenes) {
     for (const SceneInfo& s : scenes) {
         out.push_back({{"name", s.name}, {"description", s.description}, {"triangles", s.triangles},
                        {"width", s.viewport.width}, {"height", s.viewport.height}, {"samples", s.samples},
-                       {"covered_samples", s.fragments}});
+                       {"covered_samples", optional_count(s.fragments)}});
     }
     return out;
 }
@@ -27,6 +27,7 @@ json errors_json(const std::vector<ErrorRow>& errors) {
                        {"misclassified_samples", optional_count(e.misclassified)},
                        {"triangles_affected", optional_count(e.triangles_affected)},
                        {"ids_differing", e.ids_differing}, {"depths_differing", e.depths_differing},
+                       {"worst_depth_error", e.worst_depth_error},
                        {"watertight_violations", optional_count(e.watertight_violations)}});
     }
     return out;

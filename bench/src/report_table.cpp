@@ -30,19 +30,20 @@ std::string scenes_table(const std::vector<SceneInfo>& scenes) {
     for (const SceneInfo& s : scenes) {
         out += row({s.name, std::to_string(s.triangles),
                     std::to_string(s.viewport.width) + "×" + std::to_string(s.viewport.height),
-                    std::to_string(s.samples), std::to_string(s.fragments), s.description});
+                    std::to_string(s.samples), count(s.fragments), s.description});
     }
     return out;
 }
 
 std::string errors_table(const std::vector<ErrorRow>& errors, const char* scene_heading) {
     std::string out = row({scene_heading, "engine", "samples", "misclassified samples", "triangles affected",
-                           "ids differing", "depths differing", "watertight violations"}) +
-                      row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:"});
+                           "ids differing", "depths differing (bits)", "worst |Δz|", "watertight violations"}) +
+                      row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:"});
     for (const ErrorRow& e : errors) {
         out += row({e.scene, e.engine, std::to_string(e.samples), count(e.misclassified),
                     count(e.triangles_affected), std::to_string(e.ids_differing),
-                    std::to_string(e.depths_differing), count(e.watertight_violations)});
+                    std::to_string(e.depths_differing), number(e.worst_depth_error, "%.2g"),
+                    count(e.watertight_violations)});
     }
     return out;
 }
@@ -78,8 +79,9 @@ std::string aa_tables(const Report& report) {
         out += row({a.scene, std::to_string(a.error.samples), std::to_string(a.error.pixels),
                     number(a.error.mean, "%.4f"), number(a.error.worst, "%.4f")});
     }
-    out += "\n" + row({"samples/pixel", "halfplane discrepancy", "worst half-plane (n · p ≤ c)", "resolution"}) +
-           row({"---:", "---:", "---", "---:"});
+    out += '\n';
+    out += row({"samples/pixel", "halfplane discrepancy", "worst half-plane (n · p ≤ c)", "resolution"});
+    out += row({"---:", "---:", "---", "---:"});
     for (const auto& [n, d] : report.discrepancy) {
         out += row({std::to_string(n), number(d.value, "%.5f"),
                     "n = (" + number(d.normal_x, "%.4g") + ", " + number(d.normal_y, "%.4g") + "), c = " +

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <limits>
 
 namespace rast::bench {
 namespace {
@@ -18,14 +19,18 @@ Triangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
 }
 
 TEST(CompareBuffers, CountsIdsAndDepthBitsSeparately) {
-    Framebuffer a({3, 1}, 1), b({3, 1}, 1);
-    a.ids = {0, 1, -1};
-    b.ids = {0, 2, -1};
-    a.depth = {0.5, 0.25, 1.0 / 0.0};
-    b.depth = {0.5000000000000001, 0.25, 1.0 / 0.0};
+    Framebuffer a({4, 1}, 1), b({4, 1}, 1);
+    a.ids = {0, 1, -1, 3};
+    b.ids = {0, 2, -1, 4};
+    const double inf = std::numeric_limits<double>::infinity();
+    a.depth = {0.5, 0.25, inf, 0.75};
+    b.depth = {0.5 + 0x1p-10, 0.25, inf, 0.125};
     const BufferDifference d = compare_buffers(a, b);
-    EXPECT_EQ(d.ids, 1u);
-    EXPECT_EQ(d.depths, 1u);
+    EXPECT_EQ(d.ids, 2u);
+    EXPECT_EQ(d.depths, 2u);
+    // Only pixel 0 holds the same triangle on both sides: the depth gap where ids differ is not an error
+    // of depth.
+    EXPECT_EQ(d.worst_depth, 0x1p-10);
 }
 
 // A vertical left edge at x = 17/32, just right of the centre of pixel (0, 0): the reference leaves that

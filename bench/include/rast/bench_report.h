@@ -27,7 +27,8 @@ struct SceneInfo {
     std::size_t triangles = 0;
     Viewport viewport;
     int samples = 1;
-    std::uint64_t fragments = 0;  // samples covered before the depth test, counted by the reference
+    // Samples covered before the depth test, counted by the reference; none where it did not render.
+    std::optional<std::uint64_t> fragments;
 };
 
 // Engines: "reference", the fast path's precision modes by name, "llvmpipe".
@@ -44,7 +45,8 @@ struct ErrorRow {
     std::uint64_t samples = 0;  // samples in the framebuffer
     // From each triangle's covered samples; llvmpipe gives only its framebuffer, so none there.
     std::optional<std::uint64_t> misclassified, triangles_affected;
-    std::uint64_t ids_differing = 0, depths_differing = 0;
+    std::uint64_t ids_differing = 0, depths_differing = 0;  // depths: bit for bit
+    double worst_depth_error = 0;  // largest |z - z_reference| where both hold the same triangle
     std::optional<std::uint64_t> watertight_violations;  // scenes with shared edges only
 };
 
