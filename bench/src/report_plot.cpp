@@ -13,7 +13,9 @@
 namespace rast::bench {
 namespace {
 
-constexpr double kLeft = 90, kRight = 760, kTop = 40, kBottom = 520, kZeroRow = 575, kHeight = 640, kWidth = 1000;
+// The exact points get a band below the log axis, one row per scene so that their labels do not collide.
+constexpr double kLeft = 90, kRight = 760, kTop = 40, kBottom = 520, kZeroBand = 550, kZeroRowStep = 9,
+                 kHeight = 680, kWidth = 1000;
 constexpr std::array<const char*, 8> kColours{"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                                "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
@@ -76,22 +78,26 @@ std::string format_svg(const Report& report) {
                       num(kHeight) + "\" font-family=\"sans-serif\" font-size=\"11\">\n" +
                       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     for (double e = x_lo; e <= x_hi; ++e) {
-        svg += line(lx(e), kTop, lx(e), kZeroRow + 10, "#ddd") +
-               text(lx(e), kZeroRow + 28, power_of_ten(e), "text-anchor=\"middle\"");
+        svg += line(lx(e), kTop, lx(e), kBottom, "#ddd") +
+               text(lx(e), kHeight - 32, power_of_ten(e), "text-anchor=\"middle\"");
     }
     for (double e = y_lo; e <= y_hi; ++e) {
         svg += line(kLeft, ly(e), kRight, ly(e), "#ddd") +
                text(kLeft - 6, ly(e) + 4, power_of_ten(e), "text-anchor=\"end\"");
     }
-    svg += line(kLeft, kZeroRow, kRight, kZeroRow, "#ddd") + text(kLeft - 6, kZeroRow + 4, "0 (exact)", "text-anchor=\"end\"");
+    const double zero_band_end = kZeroBand + kZeroRowStep * static_cast<double>(report.scenes.size());
+    svg += "<rect x=\"" + num(kLeft) + "\" y=\"" + num(kZeroBand - 6) + "\" width=\"" + num(kRight - kLeft) +
+           "\" height=\"" + num(zero_band_end - kZeroBand + 6) + "\" fill=\"#f4f4f4\"/>\n" +
+           text(kLeft - 6, (kZeroBand + zero_band_end) / 2, "0 (exact)", "text-anchor=\"end\"");
     svg += text((kLeft + kRight) / 2, kHeight - 10, "median triangles per second, one thread (log)", "text-anchor=\"middle\"");
     svg += text(16, (kTop + kBottom) / 2, "fraction of samples whose id differs from the reference (log)",
                 ("text-anchor=\"middle\" transform=\"rotate(-90 16 " + num((kTop + kBottom) / 2) + ")\"").c_str());
     for (const Point& p : points) {
         const char* colour = kColours[p.scene % kColours.size()];
-        const double x = lx(std::log10(p.speed)), y = p.error == 0 ? kZeroRow : ly(std::log10(p.error));
-        svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"4\" fill=\"" + colour + "\"/>\n";
-        svg += text(x + 6, y - 4, p.engine, ("fill=\"" + std::string(colour) + "\"").c_str());
+        const double x = lx(std::log10(p.speed));
+        const double y = p.error == 0 ? kZeroBand + kZeroRowStep * static_cast<double>(p.scene) : ly(std::log10(p.error));
+        svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"3.5\" fill=\"" + colour + "\"/>\n";
+        svg += text(x + 5, y + 3, p.engine, ("font-size=\"9\" fill=\"" + std::string(colour) + "\"").c_str());
     }
     for (std::size_t k = 0; k < report.scenes.size(); ++k) {
         const double y = kTop + 18.0 * static_cast<double>(k);
