@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -37,7 +38,11 @@ bool same_scene(const rast::Scene& a, const rast::Scene& b) {
 }
 
 void check_accepted(const rast::Scene& scene) {
-    rast::check_scene_size(scene.viewport, scene.samples);
+    try {
+        rast::check_scene_size(scene.viewport, scene.samples);
+    } catch (const std::invalid_argument& e) {
+        finding(std::string("the reader accepted a scene beyond the limits: ") + e.what(), "");
+    }
     for (const rast::Triangle& t : scene.triangles)
         for (const rast::Vertex& v : t.v)
             if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
