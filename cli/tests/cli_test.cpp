@@ -1,56 +1,15 @@
 // The command line, end to end: files in, exit status, messages and files out.
-#include <gtest/gtest.h>
+#include "cli_harness.h"
 
-#include <sys/wait.h>
-
-#include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace {
 
-namespace fs = std::filesystem;
+using rast::cli::testing::Result;
+using rast::cli::testing::rast;
 
-struct Outcome {
-    int status;
-    std::string out;  // stdout and stderr together
-};
-
-Outcome rast(const std::string& args) {
-    const std::string command = std::string(RAST_BINARY) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) throw std::runtime_error("popen failed");
-    std::string out;
-    char buffer[4096];
-    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
-
-class Cli : public ::testing::Test {
-protected:
-    fs::path dir;
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("rast_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
-
-    std::string file(const std::string& name, const std::string& text) {
-        std::ofstream(dir / name) << text;
-        return (dir / name).string();
-    }
-    std::string read(const std::string& name) {
-        std::ifstream in(dir / name);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-};
+class Cli : public rast::cli::testing::TempDirTest {};
 
 // A right triangle with legs 4 and 3: centre (i+1/2, j+1/2) is inside iff 3x + 4y < 12 (never equal).
 constexpr const char* kCorner = "viewport 4 3\ntri 0 0 0  4 0 0  0 3 0\n";
@@ -67,7 +26,7 @@ constexpr const char* kSplitSquareIds = "1 1 -1\n1 0 -1\n-1 -1 -1\n";
 
 TEST_F(Cli, WritesTheIdBufferTopRowFirst) {
     for (const char* engine : {"reference", "fast"}) {
-        const Outcome r = rast("render " + file("corner.tri", kCorner) + " --engine " + engine + " --ids-out " +
+        const Result r = rast("render " + file("corner.tri", kCorner) + " --engine " + engine + " --ids-out " +
                            (dir / "ids.txt").string());
         ASSERT_EQ(r.status, 0) << r.out;
         EXPECT_EQ(read("ids.txt"), kCornerIds) << engine;
@@ -76,7 +35,7 @@ TEST_F(Cli, WritesTheIdBufferTopRowFirst) {
 
 TEST_F(Cli, TieRuleOnASplitSquare) {
     for (const char* engine : {"reference", "fast"}) {
-        const Outcome r = rast("render " + file("square.tri", kSplitSquare) + " --engine " + engine + " --ids-out " +
+        const Result r = rast("render " + file("square.tri", kSplitSquare) + " --engine " + engine + " --ids-out " +
                            (dir / "ids.txt").string());
         ASSERT_EQ(r.status, 0) << r.out;
         EXPECT_EQ(read("ids.txt"), kSplitSquareIds) << engine;
@@ -85,7 +44,7 @@ TEST_F(Cli, TieRuleOnASplitSquare) {
 
 TEST_F(Cli, FastPrecisionsAgreeOnSnappedVertices) {
     for (const char* precision : {"fixed4", "fixed8", "fixed16", "float32", "float64"}) {
-        const Outcome r = rast("render " + file("square.tri", kSplitSquare) + " --engine fast --precision " +
+        const Result r = rast("render " + file("square.tri", kSplitSquare) + " --engine fast --precision " +
                            precision + " --threads 2 --ids-out " + (dir / "ids.txt").string());
         ASSERT_EQ(r.status, 0) << r.out;
         EXPECT_EQ(read("ids.txt"), kSplitSquareIds) << precision;
@@ -94,7 +53,7 @@ TEST_F(Cli, FastPrecisionsAgreeOnSnappedVertices) {
 
 TEST_F(Cli, DepthAtPixelCentres) {
     // z = x on a triangle covering the left column of a 2x1 viewport; the right pixel is empty.
-    const Outcome r = rast("render " + file("ramp.tri", "viewport 2 1\ntri 0 0 0  1 0 1  0 4 0\n") + " --depth-out " +
+    const Result r = rast("render " + file("ramp.tri", "viewport 2 1\ntri 0 0 0  1 0 1  0 4 0\n") + " --depth-out " +
                        (dir / "depth.txt").string());
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_EQ(read("depth.txt"), "0.5 inf\n");
@@ -102,7 +61,7 @@ TEST_F(Cli, DepthAtPixelCentres) {
 
 TEST_F(Cli, ExactCoverageAreas) {
     // Half of pixel (0, 0); a triangle with legs 1 and 1/2 inside pixel (1, 0) covers a quarter of it.
-    const Outcome r = rast("render " +
+    const Result r = rast("render " +
                        file("half.tri", "viewport 2 1\ntri 0 0 0  1 0 0  0 1 0\ntri 1 0 0  2 0 0  2 0.5 0\n") +
                        " --coverage-out " + (dir / "area.txt").string());
     ASSERT_EQ(r.status, 0) << r.out;
@@ -110,7 +69,7 @@ TEST_F(Cli, ExactCoverageAreas) {
 }
 
 TEST_F(Cli, WritesAPictureAndASummary) {
-    const Outcome r = rast("render --default -o " + (dir / "out.png").string());
+    const Result r = rast("render --default -o " + (dir / "out.png").string());
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find("exact:"), std::string::npos) << r.out;
     std::ifstream png(dir / "out.png", std::ios::binary);
@@ -121,14 +80,14 @@ TEST_F(Cli, WritesAPictureAndASummary) {
 
 TEST_F(Cli, MalformedSceneNamesFileAndLine) {
     const std::string path = file("bad.tri", "viewport 4 4\ntri 0 0 0  1 1\n");
-    const Outcome r = rast("render " + path);
+    const Result r = rast("render " + path);
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.out.find(path + ":2:"), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, NonFiniteCoordinateIsRejected) {
     const std::string path = file("nan.tri", "viewport 4 4\n# fine\ntri 0 0 0  1 0 0  nan 1 0\n");
-    const Outcome r = rast("render " + path);
+    const Result r = rast("render " + path);
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.out.find(path + ":3:"), std::string::npos) << r.out;
 }
@@ -146,13 +105,13 @@ TEST_F(Cli, BadArgumentsAreRejected) {
 }
 
 TEST_F(Cli, OutputIntoAMissingDirectoryFailsCleanly) {
-    const Outcome r = rast("render " + file("corner.tri", kCorner) + " --ids-out " + (dir / "no/such/ids.txt").string());
+    const Result r = rast("render " + file("corner.tri", kCorner) + " --ids-out " + (dir / "no/such/ids.txt").string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.out.find("rast: error:"), std::string::npos) << r.out;
 }
 
 TEST_F(Cli, HelpExplainsEveryOption) {
-    const Outcome r = rast("render --help");
+    const Result r = rast("render --help");
     EXPECT_EQ(r.status, 0);
     for (const char* option : {"--engine", "--precision", "--threads", "--samples", "--output", "--ids-out",
                                "--depth-out", "--coverage-out", "--coverage", "--width", "--height", "--eye",

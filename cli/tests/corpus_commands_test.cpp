@@ -1,58 +1,17 @@
 // rast replay, check and diff end to end: files in, exit status, lines out, files untouched or written.
-#include <gtest/gtest.h>
+#include "cli_harness.h"
 
-#include <sys/wait.h>
-
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 namespace {
 
+using rast::cli::testing::contains;
+using rast::cli::testing::Result;
+using rast::cli::testing::rast;
+using rast::cli::testing::slurp;
 namespace fs = std::filesystem;
 
-struct Result {
-    int status;
-    std::string out;  // stdout and stderr together
-};
-
-Result rast(const std::string& args) {
-    FILE* pipe = popen((std::string(RAST_BINARY) + " " + args + " 2>&1").c_str(), "r");
-    if (!pipe) throw std::runtime_error("popen failed");
-    std::string out;
-    char buffer[4096];
-    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
-
-std::string slurp(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-class CorpusCommands : public ::testing::Test {
-protected:
-    fs::path dir;
-    void SetUp() override {
-        dir = fs::temp_directory_path() /
-              ("rast_corpus_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir);
-        fs::create_directories(dir);
-    }
-    void TearDown() override { fs::remove_all(dir); }
-    std::string file(const std::string& name, const std::string& text) {
-        fs::create_directories((dir / name).parent_path());
-        std::ofstream(dir / name) << text;
-        return (dir / name).string();
-    }
-};
+class CorpusCommands : public rast::cli::testing::TempDirTest {};
 
 // The split square: corners on pixel centres, a tiling that every exact engine must own once.
 constexpr const char* kGoodCase =

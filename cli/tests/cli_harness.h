@@ -1,0 +1,67 @@
+// Running the rast binary from a test: command line in, exit status and output back, in a fresh temporary
+// directory per test.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace rast::cli::testing {
+
+struct Result {
+    int status;
+    std::string out;  // stdout and stderr together
+};
+
+inline Result rast(const std::string& args) {
+    FILE* pipe = popen((std::string(RAST_BINARY) + " " + args + " 2>&1").c_str(), "r");
+    if (!pipe) throw std::runtime_error("popen failed");
+    std::string out;
+    char buffer[4096];
+    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+inline std::string slurp(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+// A test with its own empty directory, removed afterwards.
+class TempDirTest : public ::testing::Test {
+protected:
+    std::filesystem::path dir;
+
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir = std::filesystem::temp_directory_path() /
+              ("rast_" + std::string(info->test_suite_name()) + "_" + info->name());
+        std::filesystem::remove_all(dir);
+        std::filesystem::create_directories(dir);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir); }
+
+    // Writes `text` to dir/name (creating folders) and returns its path.
+    std::string file(const std::string& name, const std::string& text) {
+        std::filesystem::create_directories((dir / name).parent_path());
+        std::ofstream(dir / name) << text;
+        return (dir / name).string();
+    }
+    std::string read(const std::string& name) { return slurp(dir / name); }
+};
+
+}  // namespace rast::cli::testing
