@@ -2,7 +2,7 @@
 // decision exact, the fill rule as data. The only translation unit that includes CGAL.
 #include <rast/reference.h>
 
-#include "depth_plane.h"
+#include "bounded_depth.h"
 #include "exact_depth.h"
 #include "pixel_box.h"
 #include "validate.h"
@@ -35,6 +35,7 @@ Stats& Stats::operator+=(const Stats& o) {
     samples_covered += o.samples_covered;
     depth_tests += o.depth_tests;
     depth_exact += o.depth_exact;
+    depth_nearest_exact += o.depth_nearest_exact;
     return *this;
 }
 
@@ -43,8 +44,7 @@ namespace {
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Epick::Point_2;
 using ExactKernel = CGAL::Simple_cartesian<CGAL::Exact_rational>;
-using Interval = CGAL::Interval_nt_advanced;  // needs the rounding mode set upward by its user
-using IntervalKernel = CGAL::Simple_cartesian<Interval>;
+using IntervalKernel = CGAL::Simple_cartesian<CGAL::Interval_nt_advanced>;
 
 // ---------------------------------------------------------------------------------------------------
 // The orientation predicate, with its exact fallbacks counted.
@@ -188,7 +188,22 @@ public:
 private:
     CGAL::Orientation orientation(const Point& p, const Point& q, const Point& r) {
         ++stats_.orientation_tests;
+        if (const auto o = static_orientation(p, q, r)) return *o;
         return orientation_(p, q, r);
+    }
+
+    // Shewchuk's static filter for orient2d, in front of CGAL's: the double determinant errs by at most
+    // (3 + 16u) u (|l| + |r|) (ccwerrboundA, u = 2^-53) without underflow, and each of its two products
+    // may add 2^-1075 where it underflows. 4u and 2^-1000 bound both and the rounding of the bound; an
+    // overflow makes the test fail (infinity or NaN compares false), and CGAL decides.
+    static std::optional<CGAL::Orientation> static_orientation(const Point& p, const Point& q, const Point& r) {
+        const double left = (q.x() - p.x()) * (r.y() - p.y());
+        const double right = (q.y() - p.y()) * (r.x() - p.x());
+        const double det = left - right;
+        const double bound = 0x1p-51 * (std::abs(left) + std::abs(right)) + 0x1p-1000;
+        if (det > bound) return CGAL::LEFT_TURN;
+        if (det < -bound) return CGAL::RIGHT_TURN;
+        return std::nullopt;
     }
 
     static Edge edge(const Point& from, const Point& to) { return {from, to, classify(from, to)}; }
@@ -224,26 +239,8 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------------------
-// Depth: an interval filter first, exact integer fractions (exact_depth.h) when it cannot decide.
-
-// Interval_nt_advanced computes enclosures only while the rounding mode is upward; these two functions
-// are the only places it is used, and each sets and restores the mode.
-detail::DepthPlane<Interval> interval_plane(const Triangle& t) {
-    CGAL::Protect_FPU_rounding<true> upward;
-    return detail::depth_plane<Interval>(t);
-}
-
-Interval interval_depth(const detail::DepthPlane<Interval>& plane, double x, double y) {
-    CGAL::Protect_FPU_rounding<true> upward;
-    return plane.at(Interval(x), Interval(y));
-}
-
-// Whether every value of a is below every value of b. Non-finite bounds (overflow, or a zero-area
-// enclosure of the denominator) decide nothing.
-bool certainly_below(const Interval& a, const Interval& b) {
-    return std::isfinite(a.sup()) && std::isfinite(b.inf()) && std::isfinite(a.inf()) &&
-           std::isfinite(b.sup()) && a.sup() < b.inf();
-}
+// Depth: the bounded double-double planes of bounded_depth.h first, exact integer fractions
+// (exact_depth.h) where their bounds cannot decide.
 
 // The exact depth planes of a scene's triangles, built when first needed.
 class ExactDepths {
@@ -260,6 +257,56 @@ public:
 private:
     const std::vector<Triangle>& triangles_;
     std::vector<std::optional<detail::ExactDepth>> planes_;
+};
+
+// The z-buffer with the (z, id) order. It stores each fragment's exact depth rounded to nearest, and
+// rounding to nearest is monotone: a rounded depth strictly above the stored one means an exact depth
+// strictly above it. Only equal rounded depths need a closer look.
+class ZBuffer {
+public:
+    ZBuffer(const Scene& scene, Framebuffer& fb, Stats& stats)
+        : triangles_(scene.triangles), fb_(fb), stats_(stats), exact_(scene.triangles) {}
+
+    // Offers the fragment of triangle `id` at sample q; z encloses its depth (none: no bounded plane).
+    void offer(std::int32_t id, const Sample& q, const std::optional<detail::Bounded>& z) {
+        const double depth = nearest(id, q, z);
+        const std::size_t index = fb_.index(q.i, q.j, q.s);
+        const std::int32_t stored = fb_.ids[index];
+        if (stored != Framebuffer::kNoTriangle) {
+            // The (z, id) order: nearer, or as near and earlier.
+            ++stats_.depth_tests;
+            if (depth > fb_.depth[index]) return;
+            if (depth == fb_.depth[index]) {
+                const int order = compare(id, stored, q, z);
+                if (order > 0 || (order == 0 && stored < id)) return;
+            }
+        }
+        fb_.ids[index] = id;
+        fb_.depth[index] = depth;
+    }
+
+private:
+    double nearest(std::int32_t id, const Sample& q, const std::optional<detail::Bounded>& z) {
+        if (z)
+            if (const auto rounded = detail::nearest(*z)) return *rounded;
+        ++stats_.depth_nearest_exact;
+        return exact_[id].nearest(q.x, q.y);
+    }
+
+    // The sign of the depth of `id` minus that of `stored` at q.
+    int compare(std::int32_t id, std::int32_t stored, const Sample& q, const std::optional<detail::Bounded>& z) {
+        if (z)
+            if (const auto other = detail::BoundedPlane::make(triangles_[static_cast<std::size_t>(stored)]))
+                if (const int sign = detail::certain_sign_of_difference(*z, other->at(other->row(q.y), q.x)))
+                    return sign;
+        ++stats_.depth_exact;
+        return exact_[id].compare(exact_[stored], q.x, q.y);
+    }
+
+    const std::vector<Triangle>& triangles_;
+    Framebuffer& fb_;
+    Stats& stats_;
+    ExactDepths exact_;
 };
 
 // A framebuffer without storage: only its index layout.
@@ -314,45 +361,26 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
 
     Stats stats;
     Rasterizer rasterizer(stats);
-    ExactDepths exact(scene.triangles);
     Framebuffer fb(scene.viewport, scene.samples);
-    std::vector<Interval> stored_depth(fb.ids.size());  // encloses the exact depth of the stored fragment
+    ZBuffer zbuffer(scene, fb, stats);
+    std::array<detail::Bounded, 16> rows;  // the plane along each sample row of the current pixel row
 
     for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
         const Triangle& t = scene.triangles[k];
-        const auto id = static_cast<std::int32_t>(k);
         const auto ccw = rasterizer.prepare(t);
         if (!ccw) continue;
-        const auto plane = interval_plane(t);
+        const auto plane = detail::BoundedPlane::make(t);
+        int row_j = -1;
         rasterizer.for_each_covered(*ccw, detail::pixel_box(t, scene.viewport), pattern, [&](const Sample& q) {
             ++stats.samples_covered;
-            const std::size_t index = fb.index(q.i, q.j, q.s);
-            const Interval z = interval_depth(plane, q.x, q.y);
-            const std::int32_t stored = fb.ids[index];
-            if (stored != Framebuffer::kNoTriangle) {
-                // The (z, id) order: nearer, or as near and earlier.
-                ++stats.depth_tests;
-                if (certainly_below(stored_depth[index], z)) return;
-                if (!certainly_below(z, stored_depth[index])) {
-                    ++stats.depth_exact;
-                    const int order = exact[id].compare(exact[stored], q.x, q.y);
-                    if (order > 0 || (order == 0 && stored < id)) return;
-                }
+            if (!plane) return zbuffer.offer(static_cast<std::int32_t>(k), q, std::nullopt);
+            if (q.j != row_j) {
+                for (std::size_t s = 0; s < pattern.size(); ++s) rows[s] = plane->row(q.j + pattern[s].y);
+                row_j = q.j;
             }
-            fb.ids[index] = id;
-            stored_depth[index] = z;
+            zbuffer.offer(static_cast<std::int32_t>(k), q, plane->at(rows[static_cast<std::size_t>(q.s)], q.x));
         });
     }
-
-    // The stored depths: each winner's exact depth, rounded to nearest.
-    for (int j = 0; j < scene.viewport.height; ++j)
-        for (int i = 0; i < scene.viewport.width; ++i)
-            for (int s = 0; s < scene.samples; ++s) {
-                const std::size_t index = fb.index(i, j, s);
-                if (fb.ids[index] == Framebuffer::kNoTriangle) continue;
-                const SamplePoint& p = pattern[static_cast<std::size_t>(s)];
-                fb.depth[index] = exact[fb.ids[index]].nearest(i + p.x, j + p.y);
-            }
 
     if (stats_out) *stats_out = stats;
     return fb;

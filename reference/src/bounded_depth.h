@@ -1,0 +1,154 @@
+// The depth plane of a triangle in double-double arithmetic, with a rigorous error bound: the filter in
+// front of the exact depths of exact_depth.h. It decides the nearest double to a depth (the classic
+// rounding test) and most (z, id) comparisons without big integers and without changing the rounding mode.
+//
+// The plane is anchored at vertex 0: z(x, y) = z0 + p (x - x0) + q (y - y0), with p = A / W, q = B / W
+// and W, A, B the 2x2 determinants of the vertex differences (W is twice the signed area). Every step
+// below states its error; all bounds hold under round to nearest when no operation underflows or
+// overflows, which the safe range guarantees (see in_safe_range).
+#pragma once
+
+#include "double_double.h"
+
+#include <rast/scene.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <tuple>
+
+namespace rast::reference::detail {
+
+// A value known to lie in [value - err, value + err], value = hi + lo.
+struct Bounded {
+    DoubleDouble value;
+    double err = 0;
+};
+
+// Coordinates 0 or of magnitude in [2^-100, 2^100] (sample positions, multiples of 1/16 up to 2^31, are
+// too). Then every difference of two coordinates is 0 or at least 2^-152 in magnitude (it is a multiple
+// of the smaller one's last bit) and at most 2^101; every determinant is 0 or in [2^-304, 2^203]; p and
+// q are 0 or in [2^-507, 2^507]; depths at samples stay below 2^610; and every product the evaluation
+// forms is 0 or above 2^-900. Nothing underflows or overflows, so every error bound below holds.
+inline bool in_safe_range(double v) {
+    const double m = std::abs(v);
+    return m == 0 || (m >= 0x1p-100 && m <= 0x1p100);
+}
+
+// (a1 - a0)(b2 - b0) - (a2 - a0)(b1 - b0). The differences are exact double-doubles (two-sum), each
+// product of two of them is four exact two-products, so the determinant is exactly the sum of 16
+// doubles t_k. Their double-double sum errs by at most u^2 (|x.hi| + |s.hi|) <= 2u^2 sum |t_k| per
+// addition (double_double.h), so by at most 30u^2 sum |t_k| in all; 2^-100 = 64u^2 covers that and the
+// rounding of sum |t_k| itself.
+inline Bounded determinant(double a0, double a1, double a2, double b0, double b1, double b2) {
+    const DoubleDouble da1 = two_sum(a1, -a0), da2 = two_sum(a2, -a0);
+    const DoubleDouble db1 = two_sum(b1, -b0), db2 = two_sum(b2, -b0);
+    DoubleDouble sum;
+    double sum_abs = 0;
+    const auto accumulate = [&](double x, double y, double sign) {
+        const DoubleDouble product = two_prod(sign * x, y);
+        sum = add(add(sum, product.hi), product.lo);
+        sum_abs += std::abs(product.hi) + std::abs(product.lo);
+    };
+    for (const auto& [u, v, sign] : {std::tuple{da1, db2, 1.0}, std::tuple{da2, db1, -1.0}}) {
+        accumulate(u.hi, v.hi, sign);
+        accumulate(u.hi, v.lo, sign);
+        accumulate(u.lo, v.hi, sign);
+        accumulate(u.lo, v.lo, sign);
+    }
+    return {sum, 0x1p-100 * sum_abs};
+}
+
+// x / y, given |y.hi| (1 - 2^-50) > 4 y.err. With q = RN(x.hi / y.hi), x.hi - q y.hi is a double
+// (computed exactly by the FMA); the correction (x - q y) / y.hi then errs by at most about 15u^2 |x/y|
+// (two roundings of terms of size u |x|, one of the division), bounded here by 2^-101 |q| = 32u^2 |q|.
+// The operands' own errors add (x.err + |x/y| y.err) / |y|, with |x/y| <= |q| (1 + 2^-50) and
+// |y| >= |y.hi| (1 - 2^-50) - y.err. The final factor covers the rounding of the bound itself.
+inline Bounded divide(const Bounded& x, const Bounded& y) {
+    const double q = x.value.hi / y.value.hi;
+    const double remainder = std::fma(-q, y.value.hi, x.value.hi);
+    const double r = std::fma(-q, y.value.lo, remainder + x.value.lo);
+    const double aq = std::abs(q);
+    const double propagated =
+        (x.err + aq * (1 + 0x1p-50) * y.err) / (std::abs(y.value.hi) * (1 - 0x1p-50) - y.err);
+    return {two_sum(q, r / y.value.hi), (0x1p-101 * aq + propagated) * (1 + 0x1p-48)};
+}
+
+// base + slope (v - origin), v and origin in the safe range. With d = v - origin exactly (two-sum) and
+// m = slope.hi d.hi exactly (two-product), the rest is slope.hi d.lo + slope.lo d.hi (each below
+// u |m|) plus the dropped slope.lo d.lo (below u^2 |m|). The rounded operations err by at most
+// 13u^2 |m| + 3u^2 |base.hi|, bounded by 2^-101 = 32u^2 times |base.hi| + |m|. slope's own error adds
+// slope.err |d|, with |d| <= |d.hi| (1 + u); the final factor covers that and the rounding of the bound.
+inline Bounded affine(const Bounded& base, const Bounded& slope, double v, double origin) {
+    const DoubleDouble d = two_sum(v, -origin);
+    const DoubleDouble m = two_prod(slope.value.hi, d.hi);
+    const double rest = std::fma(slope.value.hi, d.lo, std::fma(slope.value.lo, d.hi, m.lo));
+    const DoubleDouble s = two_sum(base.value.hi, m.hi);
+    const double err = base.err + slope.err * std::abs(d.hi) +
+                       0x1p-101 * (std::abs(base.value.hi) + std::abs(m.hi));
+    return {two_sum(s.hi, (base.value.lo + rest) + s.lo), err * (1 + 0x1p-48)};
+}
+
+class BoundedPlane {
+public:
+    // The plane of t, or nothing when a coordinate is outside the safe range or the area is too small
+    // for the bound on W to keep its sign (then the exact depth decides everything).
+    static std::optional<BoundedPlane> make(const Triangle& t) {
+        for (const Vertex& v : t.v)
+            if (!in_safe_range(v.x) || !in_safe_range(v.y) || !in_safe_range(v.z)) return std::nullopt;
+        const auto& [a, b, c] = t.v;
+        const Bounded w = determinant(a.x, b.x, c.x, a.y, b.y, c.y);
+        if (!(std::abs(w.value.hi) * (1 - 0x1p-50) > 4 * w.err)) return std::nullopt;
+        const Bounded p = divide(determinant(a.z, b.z, c.z, a.y, b.y, c.y), w);
+        const Bounded q = divide(determinant(a.x, b.x, c.x, a.z, b.z, c.z), w);
+        return BoundedPlane(a, p, q);
+    }
+
+    // The depth along the sample row at height y (x = x0): z0 + q (y - y0).
+    Bounded row(double y) const { return affine(Bounded{{z0_, 0}, 0}, q_, y, y0_); }
+    // The depth at (x, y), from the row at height y.
+    Bounded at(const Bounded& row, double x) const { return affine(row, p_, x, x0_); }
+
+private:
+    BoundedPlane(const Vertex& anchor, const Bounded& p, const Bounded& q)
+        : x0_(anchor.x), y0_(anchor.y), z0_(anchor.z), p_(p), q_(q) {}
+
+    double x0_, y0_, z0_;
+    Bounded p_, q_;
+};
+
+// The nearest double to the exact value z encloses, when the enclosure decides it. z.value.hi is the
+// nearest double to z.value, and the exact value rounds to it too when it lies strictly between the
+// midpoints to hi's neighbours. For 2^e <= |hi| < 2^(e+1) the midpoint away from zero is 2^(e-53) from
+// hi, and so is the one toward zero unless |hi| = 2^e, where it is 2^(e-54). Measured away from zero,
+// the exact value is lo +- err from hi. For hi = 0 or subnormal the masked exponent gives 0, deciding
+// nothing. (Sums rounded to nearest are monotone, so comparing them with a power of two is exact.)
+// err = 0 only when the value is exact, and then it is 0 (+ 0.0 turns a -0.0 from zero inputs into the
+// +0.0 that the exact rounding gives).
+inline std::optional<double> nearest(const Bounded& z) {
+    if (z.err == 0) return z.value.hi + 0.0;
+    constexpr std::uint64_t kExponent = 0x7ff0000000000000u, kSignificand = 0x000fffffffffffffu;
+    const auto bits = std::bit_cast<std::uint64_t>(z.value.hi);
+    const double away = std::bit_cast<double>(bits & kExponent) * 0x1p-53;
+    const double toward = (bits & kSignificand) == 0 ? away * 0.5 : away;
+    const double lo = z.value.hi < 0 ? -z.value.lo : z.value.lo;
+    if (lo + z.err < away && z.err - lo < toward) return z.value.hi;
+    return std::nullopt;
+}
+
+// The sign of a - b when the enclosures decide it, else 0. The difference's rounding errors are below
+// u times each rounded partial result; 2u and the final factor bound them.
+inline int certain_sign_of_difference(const Bounded& a, const Bounded& b) {
+    const DoubleDouble high = two_sum(a.value.hi, -b.value.hi);
+    const double low = a.value.lo - b.value.lo;
+    const double rest = high.lo + low;
+    const double difference = high.hi + rest;
+    const double bound = (a.err + b.err + 0x1p-52 * (std::abs(low) + std::abs(rest) + std::abs(difference))) *
+                         (1 + 0x1p-48);
+    if (difference > bound) return 1;
+    if (difference < -bound) return -1;
+    return 0;
+}
+
+}  // namespace rast::reference::detail
