@@ -30,34 +30,48 @@ bool strictly_inside_pixel(const SamplePoint& p) { return p.x > 0 && p.x < 1 && 
 }  // namespace
 
 // For a tiled region (triangles meeting only along edges and vertices): the exact areas a triangle
-// leaves in the pixels sum to its area; no pixel is covered more than once over; a pixel covered
-// entirely has every sample inside it covered, and a pixel not covered at all has none of them covered.
+// leaves in the pixels sum to its area, and the triangles' areas in a pixel sum to the pixel's covered
+// area; no pixel is covered more than once over; a pixel covered entirely has every sample inside it
+// covered, and a pixel not covered at all has none of them covered.
 Outcome area_tiling(const Scene& scene, const Engine& engine) {
     const Scene geometry = engine.rasterized_geometry(scene);
     if (const auto k = folded_by_snapping(scene, geometry))
         return Outcome::not_applicable("snapping to the " + engine.name + " grid folds triangle " +
                                        describe(scene.triangles[*k], *k));
+    const Viewport vp = scene.viewport;
+    const auto pixel_index = [&](int i, int j) {
+        return static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width) + static_cast<std::size_t>(i);
+    };
+    // The per-pixel sums are complete only if every triangle could be summed.
+    std::vector<Rational> summed(static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height));
+    bool all_summed = true;
     for (std::size_t k = 0; k < geometry.triangles.size(); ++k) {
         const Triangle& t = geometry.triangles[k];
         const auto pixels = summable_pixels(t);
+        all_summed = all_summed && pixels;
         if (!pixels) continue;
         Rational sum = 0;
         for (int j = pixels->j0; j <= pixels->j1; ++j)
-            for (int i = pixels->i0; i <= pixels->i1; ++i) sum += reference::pixel_area(t, i, j);
+            for (int i = pixels->i0; i <= pixels->i1; ++i) {
+                const Rational a = reference::pixel_area(t, i, j);
+                sum += a;
+                if (i >= 0 && i < vp.width && j >= 0 && j < vp.height) summed[pixel_index(i, j)] += a;
+            }
         if (2 * sum != twice_area(t))
             return Outcome::fail("triangle " + describe(t, k) + ": its pixel areas sum to " + sum.str() +
                                  ", its area is " + Rational(twice_area(t) / 2).str());
     }
 
-    const Viewport vp = scene.viewport;
     const auto pattern = sample_pattern(scene.samples);
     const auto area = reference::coverage_area(geometry);
     const Framebuffer image = engine.render(scene);
     for (int j = 0; j < vp.height; ++j)
         for (int i = 0; i < vp.width; ++i) {
-            const Rational& a = area[static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width) +
-                                     static_cast<std::size_t>(i)];
+            const Rational& a = area[pixel_index(i, j)];
             const std::string pixel = "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
+            if (all_summed && a != summed[pixel_index(i, j)])
+                return Outcome::fail(pixel + ": covered area " + a.str() + ", yet the triangles' areas in it sum to " +
+                                     summed[pixel_index(i, j)].str());
             if (a > 1) return Outcome::fail(pixel + ": covered area " + a.str() + " exceeds 1: the triangles overlap");
             if (a != 0 && a != 1) continue;
             for (int s = 0; s < scene.samples; ++s) {

@@ -57,7 +57,7 @@ Outcome watertight(const Scene& scene, const Engine& engine) {
             for (int e = 0; e < 3; ++e) {
                 const Vertex& a = t.v[e];
                 const Vertex& b = t.v[(e + 1) % 3];
-                if (edge_uses[edge_key(a, b)] == 1 && edge_sign(a, b, at.x, at.y) == 0) on_boundary[at.index] = 1;
+                if (edge_uses.at(edge_key(a, b)) == 1 && edge_sign(a, b, at.x, at.y) == 0) on_boundary[at.index] = 1;
             }
         });
     }

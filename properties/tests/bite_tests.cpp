@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <ostream>
 
 #include "property_harness.h"
 
@@ -38,6 +39,9 @@ struct Bite {
     Precision precision;
     const char* property;
 };
+
+// Test names and messages show a bite by its name.
+void PrintTo(const Bite& b, std::ostream* os) { *os << b.name; }
 
 Triangle cut_toward_zero(Triangle t) {
     for (auto& v : t.v) {

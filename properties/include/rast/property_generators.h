@@ -3,12 +3,15 @@
 // near-zero area, huge coordinates and subnormals; triangulated regions with exactly shared vertices
 // (closed fans around a sample, strips, grids, triangulations of point sets and polygons, the front of a
 // closed mesh under a random camera); overlapping and interpenetrating triangles with equal and unequal
-// depths. Every scene is valid input: finite coordinates, a viewport of 1..24 pixels a side.
+// depths. Every scene is valid input: finite coordinates, a viewport of 1..24 pixels a side (long_rows:
+// up to 256).
 #pragma once
 
 #include <rast/scene.h>
 
 #include <rapidcheck.h>
+
+#include <vector>
 
 namespace rast::gen {
 
