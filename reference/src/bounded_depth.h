@@ -3,7 +3,8 @@
 // rounding test) and most (z, id) comparisons without big integers and without changing the rounding mode.
 //
 // The plane is anchored at vertex 0: z(x, y) = z0 + p (x - x0) + q (y - y0), with p = A / W, q = B / W
-// and W, A, B the 2x2 determinants of the vertex differences (W is twice the signed area). Every step
+// and W, A, B sums of products of the vertices' coordinates and their differences (W is twice the
+// signed area), each summed exactly and rounded to a double-double with a bound. Every step
 // below states its error; all bounds hold under round to nearest when no operation underflows or
 // overflows, which the safe range guarantees (see in_safe_range).
 #pragma once
@@ -16,7 +17,6 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
-#include <tuple>
 
 namespace rast::reference::detail {
 
@@ -27,38 +27,43 @@ struct Bounded {
 };
 
 // Coordinates 0 or of magnitude in [2^-100, 2^100] (sample positions, multiples of 1/16 up to 2^31, are
-// too). Then every difference of two coordinates is 0 or at least 2^-152 in magnitude (it is a multiple
-// of the smaller one's last bit) and at most 2^101; every determinant is 0 or in [2^-304, 2^203]; p and
-// q are 0 or in [2^-507, 2^507]; depths at samples stay below 2^610; and every product the evaluation
-// forms is 0 or above 2^-900. Nothing underflows or overflows, so every error bound below holds.
+// too). Then every coordinate and every difference of two is 0 or a multiple of 2^-152 (the last bit of
+// 2^-100) of magnitude at most 2^101; W, A and B are 0 or in [2^-304, 2^205]; p and q are 0 or in
+// [2^-509, 2^509]; depths at samples stay below 2^612; and every product the evaluation forms is 0 or
+// above 2^-900. Nothing underflows or overflows, so every error bound below holds.
 inline bool in_safe_range(double v) {
     const double m = std::abs(v);
     return m == 0 || (m >= 0x1p-100 && m <= 0x1p100);
 }
 
-// (a1 - a0)(b2 - b0) - (a2 - a0)(b1 - b0). The differences are exact double-doubles (two-sum), each
-// product of two of them is four exact two-products, so the determinant is exactly the sum of 16
-// doubles t_k. Their double-double sum errs by at most u^2 (|x.hi| + |s.hi|) <= 2u^2 sum |t_k| per
-// addition (double_double.h), so by at most 30u^2 sum |t_k| in all; 2^-100 = 64u^2 covers that and the
-// rounding of sum |t_k| itself.
-inline Bounded determinant(double a0, double a1, double a2, double b0, double b1, double b2) {
-    const DoubleDouble da1 = two_sum(a1, -a0), da2 = two_sum(a2, -a0);
-    const DoubleDouble db1 = two_sum(b1, -b0), db2 = two_sum(b2, -b0);
-    DoubleDouble sum;
-    double sum_abs = 0;
-    const auto accumulate = [&](double x, double y, double sign) {
-        const DoubleDouble product = two_prod(sign * x, y);
-        sum = add(add(sum, product.hi), product.lo);
-        sum_abs += std::abs(product.hi) + std::abs(product.lo);
-    };
-    for (const auto& [u, v, sign] : {std::tuple{da1, db2, 1.0}, std::tuple{da2, db1, -1.0}}) {
-        accumulate(u.hi, v.hi, sign);
-        accumulate(u.hi, v.lo, sign);
-        accumulate(u.lo, v.hi, sign);
-        accumulate(u.lo, v.lo, sign);
+// A sum of exact products of double-doubles, as a double-double with its error bound. Each product
+// x y is the exact sum of the two-products of the parts (two doubles each; four parts when a low part
+// is not 0). Every double-double addition errs by at most u^2 (|x.hi| + |s.hi|) <= 2u^2 sum |t_k|
+// (double_double.h), so n terms t_k err by at most 2u^2 (n - 1) sum |t_k|. 2^-100 = 64u^2 covers up
+// to 32 terms and the rounding of sum |t_k| itself; the sums below have at most 16.
+class ProductSum {
+public:
+    void add(DoubleDouble x, DoubleDouble y) {
+        term(x.hi, y.hi);
+        // Differences of nearby coordinates are exact (Sterbenz), so the low parts are mostly 0.
+        if (y.lo != 0) term(x.hi, y.lo);
+        if (x.lo != 0) {
+            term(x.lo, y.hi);
+            if (y.lo != 0) term(x.lo, y.lo);
+        }
     }
-    return {sum, 0x1p-100 * sum_abs};
-}
+    Bounded sum() const { return {sum_, 0x1p-100 * sum_abs_}; }
+
+private:
+    void term(double x, double y) {
+        const DoubleDouble product = two_prod(x, y);
+        sum_ = detail::add(detail::add(sum_, product.hi), product.lo);
+        sum_abs_ += std::abs(product.hi) + std::abs(product.lo);
+    }
+
+    DoubleDouble sum_;
+    double sum_abs_ = 0;
+};
 
 // x / y, given |y.hi| (1 - 2^-50) > 4 y.err. With q = RN(x.hi / y.hi), x.hi - q y.hi is a double
 // (computed exactly by the FMA); the correction (x - q y) / y.hi then errs by at most about 15u^2 |x/y|
@@ -97,12 +102,23 @@ public:
     static std::optional<BoundedPlane> make(const Triangle& t) {
         for (const Vertex& v : t.v)
             if (!in_safe_range(v.x) || !in_safe_range(v.y) || !in_safe_range(v.z)) return std::nullopt;
-        const auto& [a, b, c] = t.v;
-        const Bounded w = determinant(a.x, b.x, c.x, a.y, b.y, c.y);
-        if (!(std::abs(w.value.hi) * (1 - 0x1p-50) > 4 * w.err)) return std::nullopt;
-        const Bounded p = divide(determinant(a.z, b.z, c.z, a.y, b.y, c.y), w);
-        const Bounded q = divide(determinant(a.x, b.x, c.x, a.z, b.z, c.z), w);
-        return BoundedPlane(a, p, q);
+        // W = (x1 - x0)(y2 - y0) - (x2 - x0)(y1 - y0); expanded the same way, A = sum z_k (y_k+1 - y_k+2)
+        // and B = sum z_k (x_k+2 - x_k+1): differences of x and y only, which are often exact, and
+        // the vertices' z, which then need not be.
+        const auto& v = t.v;
+        const auto difference = [&](int k, int l, double Vertex::*c) { return two_sum(v[k].*c, -(v[l].*c)); };
+        ProductSum w, a, b;
+        w.add(difference(1, 0, &Vertex::x), difference(2, 0, &Vertex::y));
+        w.add(difference(0, 2, &Vertex::x), difference(1, 0, &Vertex::y));
+        const Bounded area = w.sum();
+        if (!(std::abs(area.value.hi) * (1 - 0x1p-50) > 4 * area.err)) return std::nullopt;
+        for (int k = 0; k < 3; ++k) {
+            a.add({v[k].z, 0}, difference((k + 1) % 3, (k + 2) % 3, &Vertex::y));
+            b.add({v[k].z, 0}, difference((k + 2) % 3, (k + 1) % 3, &Vertex::x));
+        }
+        const Bounded p = divide(a.sum(), area);
+        const Bounded q = divide(b.sum(), area);
+        return BoundedPlane(v[0], p, q);
     }
 
     // The depth along the sample row at height y (x = x0): z0 + q (y - y0).

@@ -1,4 +1,5 @@
-// The plane of a triangle's depth, for any number type: intervals, or integers in exact_depth.h.
+// The plane of a triangle's depth, for any number type that represents the vertices exactly (the
+// integers of exact_depth.h).
 #pragma once
 
 #include <rast/scene.h>
@@ -9,8 +10,6 @@ namespace rast::reference::detail {
 template <class NT>
 struct DepthPlane {
     NT a, b, c, w;
-    NT numerator_at(const NT& x, const NT& y) const { return a * x + b * y + c; }
-    NT at(const NT& x, const NT& y) const { return numerator_at(x, y) / w; }
 };
 
 // The lecture's barycentric interpolation z = (w0 z0 + w1 z1 + w2 z2) / (w0 + w1 + w2), where wi is the
@@ -34,12 +33,6 @@ DepthPlane<NT> depth_plane(const Triangle& t, ToXY xy, ToZ z) {
         w += C;  // the Ak and Bk sum to zero
     }
     return {a, b, c, w};
-}
-
-template <class NT>
-DepthPlane<NT> depth_plane(const Triangle& t) {
-    const auto convert = [](double v) { return NT(v); };
-    return depth_plane<NT>(t, convert, convert);
 }
 
 }  // namespace rast::reference::detail

@@ -369,10 +369,15 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
         const Triangle& t = scene.triangles[k];
         const auto ccw = rasterizer.prepare(t);
         if (!ccw) continue;
-        const auto plane = detail::BoundedPlane::make(t);
+        std::optional<detail::BoundedPlane> plane;  // made at the first covered sample: many tiny triangles have none
+        bool plane_made = false;
         int row_j = -1;
         rasterizer.for_each_covered(*ccw, detail::pixel_box(t, scene.viewport), pattern, [&](const Sample& q) {
             ++stats.samples_covered;
+            if (!plane_made) {
+                plane = detail::BoundedPlane::make(t);
+                plane_made = true;
+            }
             if (!plane) return zbuffer.offer(static_cast<std::int32_t>(k), q, std::nullopt);
             if (q.j != row_j) {
                 for (std::size_t s = 0; s < pattern.size(); ++s) rows[s] = plane->row(q.j + pattern[s].y);
