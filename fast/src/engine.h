@@ -1,15 +1,17 @@
 // The rasterizer proper: screen tiles of 64 x 64 pixels, binned triangles composed in id order per tile,
-// trivial reject / accept per tile for the integer path, SIMD rows inside. Templated on the injected
+// trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample index. Templated on the injected
 // fault; render.cpp instantiates Fault::none, the testing target the others.
 #pragma once
 
 #include "kernels.h"
+#include "scalar.h"
 #include "setup.h"
 
 #include <rast/fast.h>
 #include <rast/fast_faults.h>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -50,84 +52,128 @@ inline std::uint64_t span_bits(int from, int to, int i0) {
     return run << (from - i0);
 }
 
+// The injected bug of the float modes: E stepped along the row by repeated subtraction, which
+// accumulates rounding (the kernels evaluate it afresh at every sample).
 template <class T>
-std::uint64_t float_row_accumulated(const FloatEdgeRow<T>* edges, int i0, T sx, int n) {
+std::uint64_t float_row_accumulated(const Setup& t, const Context& c, int j, int s, int i0, int n) {
+    const T py = T(j + c.offsets[s].y);
+    const T sx = T(c.offsets[s].x);
     std::uint64_t covered = n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-    for (int e = 0; e < 3; ++e) {
-        const FloatEdgeRow<T>& edge = edges[e];
-        T value = edge.t1 - edge.d3 * (T(i0 + sx) - edge.ax);
-        for (int k = 0; k < n; ++k, value -= edge.d3)
-            if (!(value > 0 || (value == 0 && edge.inclusive))) covered &= ~(std::uint64_t{1} << k);
+    for (const FloatEdge& f : t.flt) {
+        const T d3 = T(f.d3);
+        T value = T(T(f.d1) * T(py - T(f.ay))) - d3 * (T(i0 + sx) - T(f.ax));
+        for (int k = 0; k < n; ++k, value -= d3)
+            if (!(value > 0 || (value == 0 && f.inclusive))) covered &= ~(std::uint64_t{1} << k);
     }
     return covered;
 }
 
-template <Fault F, class T>
-std::uint64_t float_row(const Setup& t, const Context& c, int j, int s, int i0, int n) {
-    const T py = T(j + c.offsets[s].y);
-    const T sx = T(c.offsets[s].x);
-    FloatEdgeRow<T> rows[3];
-    for (int e = 0; e < 3; ++e) {
-        const FloatEdge& f = t.flt[e];
-        rows[e] = {T(f.ax), T(f.d3), T(T(f.d1) * T(py - T(f.ay))), f.inclusive};
-    }
-    if constexpr (F == Fault::float_row_accumulation) return float_row_accumulated<T>(rows, i0, sx, n);
-    else if constexpr (std::is_same_v<T, float>) return coverage_float32(rows, i0, sx, n);
-    else return coverage_float64(rows, i0, sx, n);
-}
-
-// Bit k: triangle t covers sample s of pixel (i0 + k, j); n <= 64 pixels, all inside the bounding box.
+// How the kernels find the samples of block b (sample index s) that t covers; the paths that compute
+// row masks here leave them in `masks`, one per row of the block.
 template <Fault F>
-std::uint64_t row_mask(const Setup& t, const Context& c, int j, int s, int i0, int n) {
-    switch (t.path) {
+Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, std::uint64_t* masks) {
+    Coverage cov;
+    switch (t.p.path) {
         case Path::fixed: {
-            const std::int64_t x = (std::int64_t{i0} << c.bits) + c.sx[s];
-            const std::int64_t y = (std::int64_t{j} << c.bits) + c.sy[s];
-            std::int64_t base[3], step[3];
+            cov.kind = Coverage::Kind::fixed;
+            const std::int64_t x = (std::int64_t{b.i0} << c.bits) + c.sx[s];
+            const std::int64_t y = (std::int64_t{b.j0} << c.bits) + c.sy[s];
             for (int e = 0; e < 3; ++e) {
                 const FixedEdge& f = t.fixed[e];
-                base[e] = f.a * x + f.b * y + f.c;
-                step[e] = f.a << c.bits;
+                cov.e[e] = f.a * x + f.b * y + f.c;
+                cov.dx[e] = f.a << c.bits;
+                cov.dy[e] = f.b << c.bits;
             }
-            return coverage_fixed(base, step, n);
+            return cov;
         }
         case Path::wide: {
-            const Span& span = t.spans[static_cast<std::size_t>(j - t.j_lo) * c.offsets.size() + s];
-            return span_bits(std::max(span.lo, i0), std::min(span.hi, i0 + n - 1), i0);
+            const std::size_t samples = c.offsets.size();
+            for (int r = 0; r < b.rows; ++r) {
+                const Span& span = t.spans[static_cast<std::size_t>(b.j0 + r - t.p.j_lo) * samples + s];
+                masks[r] = span_bits(std::max(span.lo, b.i0), std::min(span.hi, b.i0 + b.width - 1), b.i0);
+            }
+            cov.kind = Coverage::Kind::masks;
+            cov.masks = masks;
+            return cov;
         }
-        case Path::floating:
-            return c.precision == Precision::float32 ? float_row<F, float>(t, c, j, s, i0, n)
-                                                     : float_row<F, double>(t, c, j, s, i0, n);
+        case Path::floating: {
+            const bool single = c.precision == Precision::float32;
+            if constexpr (F == Fault::float_row_accumulation) {
+                for (int r = 0; r < b.rows; ++r)
+                    masks[r] = single ? float_row_accumulated<float>(t, c, b.j0 + r, s, b.i0, b.width)
+                                      : float_row_accumulated<double>(t, c, b.j0 + r, s, b.i0, b.width);
+                cov.kind = Coverage::Kind::masks;
+                cov.masks = masks;
+                return cov;
+            }
+            cov.kind = single ? Coverage::Kind::float32 : Coverage::Kind::float64;
+            for (int e = 0; e < 3; ++e) {
+                const FloatEdge& f = t.flt[e];
+                cov.ax[e] = f.ax;
+                cov.ay[e] = f.ay;
+                cov.d1[e] = f.d1;
+                cov.d3[e] = f.d3;
+                cov.inclusive[e] = f.inclusive;
+            }
+            return cov;
+        }
     }
-    return 0;
+    return cov;
 }
 
 enum class TileClass { reject, accept, partial };
 
 // The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: an edge function is linear, so its
-// extremes over the samples' bounding rectangle are at corners chosen by the signs of a and b.
+// extremes over the samples' bounding rectangle are at corners chosen by the signs of its coefficients.
+// Exact for the integer path. For the float modes the double value at a corner is within margin of
+// the exact one minus the mode's error bound, so beyond +-margin the mode's sign is certain.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
-    if (t.path != Path::fixed) return TileClass::partial;
-    const std::int64_t x_lo = (std::int64_t{i0} << c.bits) + c.sx_min, x_hi = (std::int64_t{i1} << c.bits) + c.sx_max;
-    const std::int64_t y_lo = (std::int64_t{j0} << c.bits) + c.sy_min, y_hi = (std::int64_t{j1} << c.bits) + c.sy_max;
     bool all_inside = true;
-    for (const FixedEdge& f : t.fixed) {
-        const std::int64_t lowest = f.a * (f.a >= 0 ? x_lo : x_hi) + f.b * (f.b >= 0 ? y_lo : y_hi) + f.c;
-        const std::int64_t highest = f.a * (f.a >= 0 ? x_hi : x_lo) + f.b * (f.b >= 0 ? y_hi : y_lo) + f.c;
-        if (highest < 0) return TileClass::reject;
-        all_inside = all_inside && lowest >= 0;
+    switch (t.p.path) {
+        case Path::fixed: {
+            const std::int64_t x_lo = (std::int64_t{i0} << c.bits) + c.sx_min, x_hi = (std::int64_t{i1} << c.bits) + c.sx_max;
+            const std::int64_t y_lo = (std::int64_t{j0} << c.bits) + c.sy_min, y_hi = (std::int64_t{j1} << c.bits) + c.sy_max;
+            for (const FixedEdge& f : t.fixed) {
+                const std::int64_t lowest = f.a * (f.a >= 0 ? x_lo : x_hi) + f.b * (f.b >= 0 ? y_lo : y_hi) + f.c;
+                const std::int64_t highest = f.a * (f.a >= 0 ? x_hi : x_lo) + f.b * (f.b >= 0 ? y_hi : y_lo) + f.c;
+                if (highest < 0) return TileClass::reject;
+                all_inside = all_inside && lowest >= 0;
+            }
+            break;
+        }
+        case Path::floating: {
+            if (!(t.float_margin < std::numeric_limits<double>::infinity())) return TileClass::partial;
+            const double x_lo = i0 + c.ox_min, x_hi = i1 + c.ox_max, y_lo = j0 + c.oy_min, y_hi = j1 + c.oy_max;
+            for (int k = 0; k < 3; ++k) {
+                const Vertex& a = t.p.v[k];
+                const Vertex& b = t.p.v[(k + 1) % 3];
+                // E(p) = d1 (py - ay) - d3 (px - ax); a difference of doubles has the exact one's sign.
+                const double d1 = b.x - a.x, d3 = b.y - a.y;
+                const double lowest = d1 * ((d1 >= 0 ? y_lo : y_hi) - a.y) - d3 * ((d3 >= 0 ? x_hi : x_lo) - a.x);
+                const double highest = d1 * ((d1 >= 0 ? y_hi : y_lo) - a.y) - d3 * ((d3 >= 0 ? x_lo : x_hi) - a.x);
+                if (highest < -t.float_margin) return TileClass::reject;
+                all_inside = all_inside && lowest > t.float_margin;
+            }
+            break;
+        }
+        case Path::wide: return TileClass::partial;
     }
     return all_inside ? TileClass::accept : TileClass::partial;
 }
 
 // One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
-// kRowLanes of padding lets the last row's vector loads run past its end.
+// kRowLanes of padding lets the last row's vector loads run past its end. Reused from tile to tile.
 struct TileBuffer {
     explicit TileBuffer(int samples)
         : size(static_cast<std::size_t>(samples) * kTile * kTile),
           z(size + kRowLanes, std::numeric_limits<double>::infinity()),
           err(size + kRowLanes, 0.0),
           ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
+    // Empty again; err is read only where an id is stored.
+    void clear() {
+        std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
+        std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
+    }
     std::size_t at(int s, int row, int col) const {
         return (static_cast<std::size_t>(s) * kTile + row) * kTile + col;
     }
@@ -136,15 +182,28 @@ struct TileBuffer {
     std::vector<std::int64_t> ids;
 };
 
-// The samples the filtered test could not order: the exact (z, id) order, or the injected bug.
+// Pixels [i0, i1] x [j0, j1] of the viewport: one tile.
+struct TileRect {
+    int i0, i1, j0, j1;
+};
+
+// What the tiles need of the whole scene: the input triangles, for the exact depth order.
+struct SceneView {
+    std::span<const Triangle> triangles;
+    const Context& c;
+};
+
+// Row r of block b: the samples the filtered test could not order get the exact (z, id) order, or the
+// injected bug.
 template <Fault F>
-void resolve(std::span<const Setup> setups, std::int32_t id, const DepthRow& row, double py,
-             std::uint64_t undecided, TileBuffer& tile, std::size_t at) {
-    const Setup& t = setups[id];
+void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::uint64_t undecided,
+             TileBuffer& tile, std::size_t at, const SceneView& scene) {
+    const double py = double(b.j0 + r) + b.sy;
+    const double b_dy = p.b * (py - p.y0);
     for (; undecided != 0; undecided &= undecided - 1) {
         const int k = std::countr_zero(undecided);
-        const double px = double(row.i0 + k) + row.sx;
-        const double z = row.z0 + (row.a * (px - row.x0) + row.b_dy);
+        const double px = double(b.i0 + k) + b.sx;
+        const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
         const std::size_t slot = at + k;
         const std::int64_t other = tile.ids[slot];
         bool replace = other < 0;
@@ -152,55 +211,123 @@ void resolve(std::span<const Setup> setups, std::int32_t id, const DepthRow& row
             if constexpr (F == Fault::depth_less_equal) {
                 replace = z <= tile.z[slot];
             } else {
-                const int order = compare_depth(t.v, setups[other].v, px, py);
-                const bool wins_tie = F == Fault::no_id_tiebreak || id < other;
+                // The plane, hence the exact depth, does not depend on the order of the corners.
+                const Corners u = snap(scene.triangles[other], scene.c.precision).v;
+                const int order = compare_depth(v, u, px, py);
+                const bool wins_tie = F == Fault::no_id_tiebreak || p.id < other;
                 replace = order < 0 || (order == 0 && wins_tie);
             }
         }
         if (!replace) continue;
         const bool finite = std::isfinite(z);
-        tile.z[slot] = finite ? z : exact_depth(t.v, px, py);
-        tile.err[slot] = finite ? row.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN;
-        tile.ids[slot] = id;
+        tile.z[slot] = finite ? z : exact_depth(v, px, py);
+        tile.err[slot] = finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN;
+        tile.ids[slot] = p.id;
+    }
+}
+
+// Blocks of up to this many samples are rasterized in scalar code (scalar.h).
+inline constexpr int kScalarSamples = 16;
+
+// Triangle t, named id, into the tile's z-buffer: one block per sample index.
+template <Fault F>
+void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
+    const Context& c = scene.c;
+    const int i0 = std::max(rect.i0, t.p.i_lo), i1 = std::min(rect.i1, t.p.i_hi);
+    const int j0 = std::max(rect.j0, t.p.j_lo), j1 = std::min(rect.j1, t.p.j_hi);
+    const TileClass cls = classify(t, c, i0, i1, j0, j1);
+    if (cls == TileClass::reject) return;
+    const DepthPlane plane{t.plane.z0, t.plane.a, t.plane.x0, t.plane.b, t.plane.y0, t.plane.err, id};
+    std::uint64_t masks[kTile], undecided[kTile];
+    for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
+        const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
+        const Coverage cov = cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
+        const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
+        const DepthRows rows{tile.z.data() + at, tile.err.data() + at, tile.ids.data() + at, kTile};
+        const bool open = b.width * b.rows <= kScalarSamples ? depth_block_scalar(b, cov, plane, rows, undecided)
+                                                             : depth_block(b, cov, plane, rows, undecided);
+        if (!open) continue;
+        for (int r = 0; r < b.rows; ++r)
+            if (undecided[r] != 0) resolve<F>(t.p.v, plane, b, r, undecided[r], tile, at + r * kTile, scene);
+    }
+}
+
+// A triangle whose bounding box spans at most kSmallSide pixels each way (so at most 2 x 2 tiles) is
+// binned as it was placed and set up in each tile it is rasterized in: its record is small and read
+// once, where a shared setup would be written, then read back from memory.
+inline constexpr int kSmallSide = 32;
+
+inline bool is_small(const Placed& p) {
+    return p.path != Path::wide && p.i_hi - p.i_lo < kSmallSide && p.j_hi - p.j_lo < kSmallSide;
+}
+
+struct SmallTriangle {
+    Placed p;
+    std::int32_t id;
+};
+
+struct BigTriangle {
+    Setup s;
+    std::int32_t id;
+};
+
+// The triangles of one contiguous id range, binned per tile in id order.
+struct Chunk {
+    std::vector<BigTriangle> big;
+    std::vector<std::vector<SmallTriangle>> small_bins;
+    std::vector<std::vector<std::uint32_t>> big_bins;  // indices into big
+};
+
+template <Fault F>
+void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, int tiles_x, int tiles) {
+    chunk.small_bins.resize(static_cast<std::size_t>(tiles));
+    chunk.big_bins.resize(static_cast<std::size_t>(tiles));
+    for (std::size_t id = begin; id != end; ++id) {
+        const std::optional<Placed> placed = place<F>(scene.triangles[id], scene.c);
+        if (!placed) continue;
+        const bool small = is_small(*placed);
+        if (!small) chunk.big.push_back({setup_triangle<F>(*placed, scene.c, true), static_cast<std::int32_t>(id)});
+        for (int ty = placed->j_lo / kTile; ty <= placed->j_hi / kTile; ++ty)
+            for (int tx = placed->i_lo / kTile; tx <= placed->i_hi / kTile; ++tx) {
+                const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
+                if (small) chunk.small_bins[tile].push_back({*placed, static_cast<std::int32_t>(id)});
+                else chunk.big_bins[tile].push_back(static_cast<std::uint32_t>(chunk.big.size() - 1));
+            }
     }
 }
 
 template <Fault F>
-void render_tile(std::span<const Setup> setups, std::span<const std::int32_t> bin, const Context& c,
-                 int tx, int ty, Framebuffer& fb) {
-    const int samples = static_cast<int>(c.offsets.size());
-    const int ti0 = tx * kTile, tj0 = ty * kTile;
-    const int ti1 = std::min(ti0 + kTile, c.vp.width) - 1, tj1 = std::min(tj0 + kTile, c.vp.height) - 1;
-    TileBuffer tile(samples);
-    for (const std::int32_t id : bin) {
-        const Setup& t = setups[id];
-        const int i0 = std::max(ti0, t.i_lo), i1 = std::min(ti1, t.i_hi);
-        const int j0 = std::max(tj0, t.j_lo), j1 = std::min(tj1, t.j_hi);
-        const TileClass cls = classify(t, c, i0, i1, j0, j1);
-        if (cls == TileClass::reject) continue;
-        const int n = i1 - i0 + 1;
-        const std::uint64_t full = span_bits(i0, i1, i0);
-        for (int s = 0; s < samples; ++s) {
-            for (int j = j0; j <= j1; ++j) {
-                const std::uint64_t covered = cls == TileClass::accept ? full : row_mask<F>(t, c, j, s, i0, n);
-                if (covered == 0) continue;
-                const double py = j + c.offsets[s].y;
-                const DepthRow row{t.plane.z0, t.plane.a, t.plane.b * (py - t.plane.y0), t.plane.x0,
-                                   t.plane.err, id, i0, c.offsets[s].x};
-                const std::size_t at = tile.at(s, j - tj0, i0 - ti0);
-                const std::uint64_t undecided =
-                    depth_row(row, covered, tile.z.data() + at, tile.err.data() + at, tile.ids.data() + at);
-                if (undecided != 0) resolve<F>(setups, id, row, py, undecided, tile, at);
+void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRect& rect, TileBuffer& tile,
+                 const SceneView& scene, Framebuffer& fb) {
+    tile.clear();
+    for (const Chunk& chunk : chunks) {
+        const std::vector<SmallTriangle>& small = chunk.small_bins[index];
+        const std::vector<std::uint32_t>& big = chunk.big_bins[index];
+        // Both lists are in id order; merged, the tile composes all its triangles in id order.
+        for (std::size_t a = 0, b = 0; a < small.size() || b < big.size();) {
+            if (b == big.size() || (a < small.size() && small[a].id < chunk.big[big[b]].id)) {
+                rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
+                ++a;
+            } else {
+                const BigTriangle& t = chunk.big[big[b]];
+                rasterize<F>(t.s, t.id, rect, tile, scene);
+                ++b;
             }
         }
     }
-    for (int j = tj0; j <= tj1; ++j)
-        for (int i = ti0; i <= ti1; ++i)
-            for (int s = 0; s < samples; ++s) {
-                const std::size_t from = tile.at(s, j - tj0, i - ti0), to = fb.index(i, j, s);
-                fb.ids[to] = static_cast<std::int32_t>(tile.ids[from]);
-                fb.depth[to] = tile.z[from];
+    const int samples = static_cast<int>(scene.c.offsets.size());
+    const int width = rect.i1 - rect.i0 + 1;
+    for (int j = rect.j0; j <= rect.j1; ++j)
+        for (int s = 0; s < samples; ++s) {
+            const std::int64_t* ids = tile.ids.data() + tile.at(s, j - rect.j0, 0);
+            const double* z = tile.z.data() + tile.at(s, j - rect.j0, 0);
+            std::int32_t* to_ids = fb.ids.data() + fb.index(rect.i0, j, s);
+            double* to_depth = fb.depth.data() + fb.index(rect.i0, j, s);
+            for (int k = 0; k < width; ++k) {
+                to_ids[k * samples] = static_cast<std::int32_t>(ids[k]);
+                to_depth[k * samples] = z[k];
             }
+        }
 }
 
 template <Fault F>
@@ -214,28 +341,32 @@ Framebuffer render_scene(const Scene& scene, const Options& options) {
         throw std::invalid_argument("rast::fast: more triangles than 32-bit ids can name");
 
     const Context c = make_context<F>(scene.viewport, scene.samples, options.precision);
+    const SceneView view{scene.triangles, c};
     const int tiles_x = (c.vp.width + kTile - 1) / kTile, tiles_y = (c.vp.height + kTile - 1) / kTile;
-    std::vector<Setup> setups(scene.triangles.size());
-    std::vector<std::vector<std::int32_t>> bins(static_cast<std::size_t>(tiles_x) * tiles_y);
+    const int tiles = tiles_x * tiles_y;
     Framebuffer fb(c.vp, scene.samples);
 
     tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
+    // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
+    // its triangles in id order, whatever the number of chunks.
+    const std::size_t n = scene.triangles.size();
+    constexpr std::size_t kChunkTriangles = 16384;
+    const std::size_t workers = static_cast<std::size_t>(arena.max_concurrency());
+    const std::size_t chunk_count = workers == 1 ? 1 : std::clamp<std::size_t>(n / kChunkTriangles, 1, 4 * workers);
+    std::vector<Chunk> chunks(chunk_count);
+    tbb::enumerable_thread_specific<TileBuffer> buffers(scene.samples);
     arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, setups.size(), 256), [&](const auto& r) {
-            for (std::size_t id = r.begin(); id != r.end(); ++id)
-                setups[id] = setup_triangle<F>(scene.triangles[id], c);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count, 1), [&](const auto& r) {
+            for (std::size_t k = r.begin(); k != r.end(); ++k)
+                bin_chunk<F>(chunks[k], k * n / chunk_count, (k + 1) * n / chunk_count, view, tiles_x, tiles);
         });
-        // Binning in id order is what makes every tile compose its triangles in id order.
-        for (std::size_t id = 0; id < setups.size(); ++id) {
-            const Setup& t = setups[id];
-            if (t.empty) continue;
-            for (int ty = t.j_lo / kTile; ty <= t.j_hi / kTile; ++ty)
-                for (int tx = t.i_lo / kTile; tx <= t.i_hi / kTile; ++tx)
-                    bins[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(static_cast<std::int32_t>(id));
-        }
-        tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y, 1), [&](const auto& r) {
-            for (int tile = r.begin(); tile != r.end(); ++tile)
-                render_tile<F>(setups, bins[tile], c, tile % tiles_x, tile / tiles_x, fb);
+        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const auto& r) {
+            TileBuffer& tile = buffers.local();
+            for (int index = r.begin(); index != r.end(); ++index) {
+                const int i0 = index % tiles_x * kTile, j0 = index / tiles_x * kTile;
+                const TileRect rect{i0, std::min(i0 + kTile, c.vp.width) - 1, j0, std::min(j0 + kTile, c.vp.height) - 1};
+                render_tile<F>(chunks, static_cast<std::size_t>(index), rect, tile, view, fb);
+            }
         });
     });
     return fb;
@@ -246,20 +377,24 @@ std::vector<std::size_t> covered_by(const Triangle& triangle, Viewport vp, int s
     validate(vp, samples);
     validate(triangle, 0);
     const Context c = make_context<F>(vp, samples, precision);
-    const Setup t = setup_triangle<F>(triangle, c);
     std::vector<std::size_t> out;
-    if (t.empty) return out;
+    const std::optional<Placed> placed = place<F>(triangle, c);
+    if (!placed) return out;
+    const Setup t = setup_triangle<F>(*placed, c, false);
+    std::uint64_t masks[kTile], covered[kTile];
     for (int s = 0; s < samples; ++s)
-        for (int j = t.j_lo; j <= t.j_hi; ++j)
-            for (int i0 = t.i_lo; i0 <= t.i_hi; i0 += kRowLanes) {
-                const int n = std::min(kRowLanes, t.i_hi - i0 + 1);
-                for (std::uint64_t m = row_mask<F>(t, c, j, s, i0, n); m != 0; m &= m - 1) {
-                    const std::size_t i = static_cast<std::size_t>(i0 + std::countr_zero(m));
-                    out.push_back((static_cast<std::size_t>(j) * vp.width + i) * samples + s);
-                }
+        for (int j0 = t.p.j_lo; j0 <= t.p.j_hi; j0 += kTile)
+            for (int i0 = t.p.i_lo; i0 <= t.p.i_hi; i0 += kTile) {
+                const Block b{i0, j0, std::min(kTile, t.p.i_hi - i0 + 1), std::min(kTile, t.p.j_hi - j0 + 1),
+                              c.offsets[s].x, c.offsets[s].y};
+                coverage_block(b, coverage_of<F>(t, c, b, s, masks), covered);
+                for (int r = 0; r < b.rows; ++r)
+                    for (std::uint64_t m = covered[r]; m != 0; m &= m - 1) {
+                        const std::size_t i = static_cast<std::size_t>(i0 + std::countr_zero(m));
+                        out.push_back((static_cast<std::size_t>(j0 + r) * vp.width + i) * samples + s);
+                    }
             }
     std::sort(out.begin(), out.end());
     return out;
 }
-
 }  // namespace rast::fast::detail

@@ -13,8 +13,13 @@ HWY_BEFORE_NAMESPACE();
 namespace rast::fast::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-template <class D>
-std::uint64_t mask_bits(D d, hn::Mask<D> m) {
+// Double lanes carry the depth test; every coverage evaluator answers in them.
+using D = hn::ScalableTag<double>;
+using DI = hn::RebindToSigned<D>;
+using MD = hn::Mask<D>;
+using VD = hn::Vec<D>;
+
+std::uint64_t mask_bits(D d, MD m) {
     std::uint8_t bytes[8] = {};
     hn::StoreMaskBits(d, m, bytes);
     std::uint64_t bits = 0;
@@ -22,101 +27,207 @@ std::uint64_t mask_bits(D d, hn::Mask<D> m) {
     return bits;
 }
 
-template <class D>
-hn::Mask<D> lanes_of(D d, std::uint64_t bits) {
+MD lanes_of(D d, std::uint64_t bits) {
     std::uint8_t bytes[8];
     std::memcpy(bytes, &bits, sizeof bytes);
     return hn::LoadMaskBits(d, bytes);
 }
 
-std::uint64_t first_n(int n) { return n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1; }
+// Each evaluator is told the row (start_row), then asked for the lanes from k = 0 upwards in steps of
+// Lanes(D) (chunk), px being the lanes' sample x, i + sx.
+struct All {
+    void start_row(int) {}
+    MD chunk(int, VD) { return hn::FirstN(D(), hn::Lanes(D())); }
+};
 
-std::uint64_t CoverageFixed(const std::int64_t* base, const std::int64_t* step, int n) {
-    const hn::ScalableTag<std::int64_t> d;
-    const int lanes = static_cast<int>(hn::Lanes(d));
-    HWY_ALIGN std::int64_t start[3][HWY_MAX_BYTES / sizeof(std::int64_t)];
-    for (int e = 0; e < 3; ++e)
-        for (int k = 0; k < lanes; ++k) start[e][k] = base[e] + k * step[e];
-    auto e0 = hn::Load(d, start[0]), e1 = hn::Load(d, start[1]), e2 = hn::Load(d, start[2]);
-    const auto s0 = hn::Set(d, step[0] * lanes), s1 = hn::Set(d, step[1] * lanes),
-               s2 = hn::Set(d, step[2] * lanes);
-    const auto zero = hn::Zero(d);
-    std::uint64_t covered = 0;
-    for (int k = 0; k < n; k += lanes) {
-        // All three are >= 0 exactly when their bitwise or has a clear sign bit.
-        const auto outside = hn::Lt(hn::Or(hn::Or(e0, e1), e2), zero);
-        covered |= (mask_bits(d, hn::Not(outside))) << k;
-        e0 = hn::Add(e0, s0);
-        e1 = hn::Add(e1, s1);
-        e2 = hn::Add(e2, s2);
-    }
-    return covered & first_n(n);
-}
+struct Masks {
+    const std::uint64_t* masks;
+    std::uint64_t bits = 0;
+    void start_row(int r) { bits = masks[r]; }
+    MD chunk(int k, VD) { return lanes_of(D(), bits >> k); }
+};
 
-template <class T, class Edge>
-std::uint64_t CoverageFloat(const Edge* edges, int i0, T sx, int n) {
-    const hn::ScalableTag<T> d;
-    const hn::RebindToSigned<decltype(d)> di;
-    const int lanes = static_cast<int>(hn::Lanes(d));
-    const auto zero = hn::Zero(d);
-    std::uint64_t covered = 0;
-    for (int k = 0; k < n; k += lanes) {
-        // i0 + k + lane converts exactly (|i| < 2^24), so this is T(i + sx) rounded once.
-        const auto px = hn::Add(hn::ConvertTo(d, hn::Iota(di, i0 + k)), hn::Set(d, sx));
-        auto inside = hn::FirstN(d, static_cast<std::size_t>(lanes));
+struct FixedEdges {
+    explicit FixedEdges(const Coverage& c) : cov(c) {
+        const DI di;
+        const int lanes = static_cast<int>(hn::Lanes(di));
+        HWY_ALIGN std::int64_t ramp[HWY_MAX_BYTES / sizeof(std::int64_t)];
         for (int e = 0; e < 3; ++e) {
-            const Edge& edge = edges[e];
-            const auto value =
-                hn::Sub(hn::Set(d, edge.t1), hn::Mul(hn::Set(d, edge.d3), hn::Sub(px, hn::Set(d, edge.ax))));
-            const auto on_edge = hn::And(hn::Eq(value, zero),
-                                         hn::FirstN(d, edge.inclusive ? static_cast<std::size_t>(lanes) : 0));
-            inside = hn::And(inside, hn::Or(hn::Gt(value, zero), on_edge));
+            for (int k = 0; k < lanes; ++k) ramp[k] = k * c.dx[e];
+            lane[e] = hn::Load(di, ramp);
+            step[e] = hn::Set(di, c.dx[e] * lanes);
         }
-        covered |= mask_bits(d, inside) << k;
     }
-    return covered & first_n(n);
-}
+    void start_row(int r) {
+        for (int e = 0; e < 3; ++e) value[e] = hn::Add(hn::Set(DI(), cov.e[e] + r * cov.dy[e]), lane[e]);
+    }
+    MD chunk(int, VD) {
+        // All three are >= 0 exactly when their bitwise or is > -1.
+        const auto inside = hn::Gt(hn::Or(hn::Or(value[0], value[1]), value[2]), hn::Set(DI(), -1));
+        for (int e = 0; e < 3; ++e) value[e] = hn::Add(value[e], step[e]);
+        return hn::RebindMask(D(), inside);
+    }
+    const Coverage& cov;
+    hn::Vec<DI> lane[3], step[3], value[3];
+};
 
-std::uint64_t CoverageFloat32(const FloatEdgeRow<float>* edges, int i0, float sx, int n) {
-    return CoverageFloat<float>(edges, i0, sx, n);
-}
+// The float edges in T = double: px is the depth test's own sample x.
+struct Float64Edges {
+    Float64Edges(const Coverage& c, const Block& b) : cov(c), block(b) {
+        for (int e = 0; e < 3; ++e) inclusive[e] = hn::FirstN(D(), c.inclusive[e] ? hn::Lanes(D()) : 0);
+    }
+    void start_row(int r) {
+        const double py = double(block.j0 + r) + block.sy;
+        for (int e = 0; e < 3; ++e) t1[e] = hn::Set(D(), cov.d1[e] * (py - cov.ay[e]));
+    }
+    MD chunk(int, VD px) {
+        const D d;
+        const auto zero = hn::Zero(d);
+        auto inside = hn::FirstN(d, hn::Lanes(d));
+        for (int e = 0; e < 3; ++e) {
+            const auto value = hn::Sub(t1[e], hn::Mul(hn::Set(d, cov.d3[e]), hn::Sub(px, hn::Set(d, cov.ax[e]))));
+            inside = hn::And(inside, hn::Or(hn::Gt(value, zero), hn::And(hn::Eq(value, zero), inclusive[e])));
+        }
+        return inside;
+    }
+    const Coverage& cov;
+    const Block& block;
+    MD inclusive[3];
+    VD t1[3];
+};
 
-std::uint64_t CoverageFloat64(const FloatEdgeRow<double>* edges, int i0, double sx, int n) {
-    return CoverageFloat<double>(edges, i0, sx, n);
-}
+// The float edges in T = float, on as many float lanes as there are double lanes.
+struct Float32Edges {
+    using DF = hn::Rebind<float, D>;
+    using DF32 = hn::RebindToSigned<DF>;
+    using MF = hn::Mask<DF>;
+    Float32Edges(const Coverage& c, const Block& b) : cov(c), block(b) {
+        const DF df;
+        for (int e = 0; e < 3; ++e) {
+            inclusive[e] = hn::FirstN(df, c.inclusive[e] ? hn::Lanes(df) : 0);
+            ax[e] = hn::Set(df, float(c.ax[e]));
+            d3[e] = hn::Set(df, float(c.d3[e]));
+        }
+        lane = hn::Iota(df, 0.0f);
+        sx = hn::Set(df, float(b.sx));
+    }
+    void start_row(int r) {
+        const float py = float(double(block.j0 + r) + block.sy);
+        for (int e = 0; e < 3; ++e) t1[e] = hn::Set(DF(), float(cov.d1[e]) * (py - float(cov.ay[e])));
+    }
+    MD chunk(int k, VD) {
+        const DF df;
+        // i converts exactly (|i| < 2^24), so px is T(i + sx) rounded once.
+        const auto px = hn::Add(hn::Add(hn::Set(df, float(block.i0 + k)), lane), sx);
+        const auto zero = hn::Zero(df);
+        auto inside = hn::FirstN(df, hn::Lanes(df));
+        for (int e = 0; e < 3; ++e) {
+            const auto value = hn::Sub(t1[e], hn::Mul(d3[e], hn::Sub(px, ax[e])));
+            inside = hn::And(inside, hn::Or(hn::Gt(value, zero), hn::And(hn::Eq(value, zero), inclusive[e])));
+        }
+        // Widen the all-ones / all-zeros lanes from 32 to 64 bits by sign extension.
+        const auto wide = hn::PromoteTo(DI(), hn::BitCast(DF32(), hn::VecFromMask(df, inside)));
+        return hn::MaskFromVec(hn::BitCast(D(), wide));
+    }
+    const Coverage& cov;
+    const Block& block;
+    MF inclusive[3];
+    hn::Vec<DF> ax[3], d3[3], t1[3], lane, sx;
+};
 
-std::uint64_t DepthRowImpl(const DepthRow& row, std::uint64_t covered, double* z, double* err,
-                           std::int64_t* ids) {
-    const hn::ScalableTag<double> d;
-    const hn::RebindToSigned<decltype(d)> di;
+template <class Evaluator>
+void CoverageLoop(const Block& b, Evaluator& ev, std::uint64_t* covered) {
+    const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
-    const auto z0 = hn::Set(d, row.z0), a = hn::Set(d, row.a), b_dy = hn::Set(d, row.b_dy),
-               x0 = hn::Set(d, row.x0), e = hn::Set(d, row.err), sx = hn::Set(d, row.sx);
-    const auto id = hn::Set(di, row.id);
-    const auto none = hn::Zero(di);
-    // px = i + sx for the lanes: sums of integers below 2^25 and multiples of 1/16, exact.
-    const auto advance = hn::Set(d, static_cast<double>(lanes));
-    auto px = hn::Add(hn::Iota(d, static_cast<double>(row.i0)), sx);
-    std::uint64_t undecided = 0;
-    for (int k = 0; k < kRowLanes && covered >> k != 0; k += lanes, px = hn::Add(px, advance)) {
-        const std::uint64_t bits = (covered >> k) & first_n(lanes);
-        if (bits == 0) continue;
-        const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
-        const auto stored = hn::LoadU(d, z + k), stored_err = hn::LoadU(d, err + k);
-        const auto stored_id = hn::LoadU(di, ids + k);
-        const auto finite = hn::IsFinite(depth);
-        const auto empty = hn::RebindMask(d, hn::Lt(stored_id, none));
-        const auto nearer = hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err));
-        const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_err));
-        const auto mask = lanes_of(d, bits);
-        const auto write = hn::And(mask, hn::Or(hn::And(empty, finite), hn::And(hn::Not(empty), nearer)));
-        hn::StoreU(hn::IfThenElse(write, depth, stored), d, z + k);
-        hn::StoreU(hn::IfThenElse(write, e, stored_err), d, err + k);
-        hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, stored_id), di, ids + k);
-        const auto open = hn::AndNot(hn::Or(write, hn::And(hn::Not(empty), farther)), mask);
-        undecided |= mask_bits(d, open) << k;
+    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
+    for (int r = 0; r < b.rows; ++r) {
+        ev.start_row(r);
+        std::uint64_t bits = 0;
+        // px = i + sx: sums of integers below 2^25 and multiples of 1/16, exact.
+        auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
+        for (int k = 0; k < b.width; k += lanes, px = hn::Add(px, advance)) {
+            const auto m = hn::And(ev.chunk(k, px), hn::FirstN(d, static_cast<std::size_t>(b.width - k)));
+            bits |= mask_bits(d, m) << k;
+        }
+        covered[r] = bits;
     }
-    return undecided;
+}
+
+template <class Evaluator>
+bool DepthLoop(const Block& b, Evaluator& ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
+    const D d;
+    const DI di;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const auto z0 = hn::Set(d, p.z0), a = hn::Set(d, p.a), x0 = hn::Set(d, p.x0), e = hn::Set(d, p.err);
+    const auto id = hn::Set(di, p.id);
+    const auto none = hn::Zero(di);
+    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
+    bool any = false;
+    for (int r = 0; r < b.rows; ++r) {
+        ev.start_row(r);
+        const double py = double(b.j0 + r) + b.sy;
+        const auto b_dy = hn::Set(d, p.b * (py - p.y0));
+        double* z = rows.z + r * rows.stride;
+        double* err = rows.err + r * rows.stride;
+        std::int64_t* ids = rows.ids + r * rows.stride;
+        std::uint64_t open_bits = 0;
+        auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
+        for (int k = 0; k < b.width; k += lanes, px = hn::Add(px, advance)) {
+            const auto mask = hn::And(ev.chunk(k, px), hn::FirstN(d, static_cast<std::size_t>(b.width - k)));
+            if (hn::AllFalse(d, mask)) continue;
+            const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
+            const auto stored = hn::LoadU(d, z + k), stored_err = hn::LoadU(d, err + k);
+            const auto stored_id = hn::LoadU(di, ids + k);
+            const auto empty = hn::RebindMask(d, hn::Lt(stored_id, none));
+            const auto nearer = hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err));
+            const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_err));
+            const auto write =
+                hn::And(mask, hn::Or(hn::And(empty, hn::IsFinite(depth)), hn::AndNot(empty, nearer)));
+            hn::StoreU(hn::IfThenElse(write, depth, stored), d, z + k);
+            hn::StoreU(hn::IfThenElse(write, e, stored_err), d, err + k);
+            hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, stored_id), di, ids + k);
+            const auto open = hn::AndNot(hn::Or(write, hn::AndNot(empty, farther)), mask);
+            if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
+        }
+        undecided[r] = open_bits;
+        any = any || open_bits != 0;
+    }
+    return any;
+}
+
+// Instantiates `loop` with the evaluator for the coverage's kind.
+template <class Loop>
+auto with_evaluator(const Block& b, const Coverage& c, Loop loop) {
+    switch (c.kind) {
+        case Coverage::Kind::masks: {
+            Masks ev{c.masks};
+            return loop(ev);
+        }
+        case Coverage::Kind::fixed: {
+            FixedEdges ev(c);
+            return loop(ev);
+        }
+        case Coverage::Kind::float32: {
+            Float32Edges ev(c, b);
+            return loop(ev);
+        }
+        case Coverage::Kind::float64: {
+            Float64Edges ev(c, b);
+            return loop(ev);
+        }
+        case Coverage::Kind::all: break;
+    }
+    All ev;
+    return loop(ev);
+}
+
+void CoverageBlock(const Block& b, const Coverage& c, std::uint64_t* covered) {
+    with_evaluator(b, c, [&](auto& ev) { CoverageLoop(b, ev, covered); });
+}
+
+bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, DepthRows rows,
+                std::uint64_t* undecided) {
+    return with_evaluator(b, c, [&](auto& ev) { return DepthLoop(b, ev, p, rows, undecided); });
 }
 
 }  // namespace rast::fast::detail::HWY_NAMESPACE
@@ -125,26 +236,16 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace rast::fast::detail {
 
-HWY_EXPORT(CoverageFixed);
-HWY_EXPORT(CoverageFloat32);
-HWY_EXPORT(CoverageFloat64);
-HWY_EXPORT(DepthRowImpl);
+HWY_EXPORT(CoverageBlock);
+HWY_EXPORT(DepthBlock);
 
-std::uint64_t coverage_fixed(const std::int64_t* base, const std::int64_t* step, int n) {
-    return HWY_DYNAMIC_DISPATCH(CoverageFixed)(base, step, n);
+void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered) {
+    HWY_DYNAMIC_DISPATCH(CoverageBlock)(block, coverage, covered);
 }
 
-std::uint64_t coverage_float32(const FloatEdgeRow<float>* edges, int i0, float sx, int n) {
-    return HWY_DYNAMIC_DISPATCH(CoverageFloat32)(edges, i0, sx, n);
-}
-
-std::uint64_t coverage_float64(const FloatEdgeRow<double>* edges, int i0, double sx, int n) {
-    return HWY_DYNAMIC_DISPATCH(CoverageFloat64)(edges, i0, sx, n);
-}
-
-std::uint64_t depth_row(const DepthRow& row, std::uint64_t covered, double* z, double* err,
-                        std::int64_t* ids) {
-    return HWY_DYNAMIC_DISPATCH(DepthRowImpl)(row, covered, z, err, ids);
+bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
+                 std::uint64_t* undecided) {
+    return HWY_DYNAMIC_DISPATCH(DepthBlock)(block, coverage, plane, rows, undecided);
 }
 
 }  // namespace rast::fast::detail

@@ -1,40 +1,63 @@
-// The inner loops over one row of up to 64 samples of a tile, in SIMD with runtime dispatch (Highway).
-// Bit k of a mask stands for the sample of pixel i0 + k. Every lane computes exactly what the scalar
-// definition in the comments computes (integers, or the same IEEE operations without contraction), so
-// the result does not depend on the instruction set.
+// The inner loops over a block of samples (up to 64 x 64 pixels, one sample index), in SIMD with runtime
+// dispatch (Highway): coverage by edge functions fused with the z-buffer test, one call per triangle and
+// tile. Bit k of a row mask stands for the sample of pixel i0 + k. Every lane computes exactly what the
+// scalar definition in the comments computes (integers, or the same IEEE operations without
+// contraction), so the result does not depend on the instruction set.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace rast::fast::detail {
 
 inline constexpr int kRowLanes = 64;
 
-// Fixed point: covered iff base[e] + k * step[e] >= 0 for the three edges (the tie bias is in base).
-std::uint64_t coverage_fixed(const std::int64_t* base, const std::int64_t* step, int n);
-
-// Float edge a -> b in T on one sample row y: E(px) = t1 - d3 * (px - ax), with t1 = (bx - ax) * (y - ay)
-// and d3 = by - ay already rounded to T, px = T(i0 + k + sx). Covered iff E > 0, or E == 0 on an
-// inclusive edge.
-template <class T>
-struct FloatEdgeRow {
-    T ax, d3, t1;
-    bool inclusive;
+// Samples (i + sx, j + sy) for pixels i in [i0, i0 + width), rows j in [j0, j0 + rows); width, rows <= 64.
+struct Block {
+    int i0, j0, width, rows;
+    double sx, sy;
 };
-std::uint64_t coverage_float32(const FloatEdgeRow<float>* edges, int i0, float sx, int n);
-std::uint64_t coverage_float64(const FloatEdgeRow<double>* edges, int i0, double sx, int n);
 
-// The z-buffer on one sample row. z = z0 + (a * ((i0 + k + sx) - x0) + b_dy), error bound err. A covered
-// sample is written (z, err, id) when the slot is empty and z finite, or when z + err < z' - err'
-// (decided nearer); it is left when z - err > z' + err' (decided farther). The rest are returned
-// undecided for the exact comparison. The buffers are read (not written) up to 64 lanes past i0.
-struct DepthRow {
-    double z0, a, b_dy, x0, err;
+// Which samples of a block a triangle covers.
+struct Coverage {
+    enum class Kind {
+        all,      // every sample (a trivially accepted tile)
+        masks,    // given per row in `masks`
+        fixed,    // integer edge functions: E at (i0, j0) plus k * dx + r * dy; covered iff all three >= 0
+                  // (the tie bias is in E)
+        float32,  // float edge a -> b evaluated in T on a sample row y, px = T(i + sx) rounded once:
+        float64,  //   E = T(bx - ax) * T(T(y) - ay) - T(by - ay) * (px - ax); covered iff E > 0, or E == 0
+                  //   on an inclusive edge. ax, ay, d1 = bx - ax, d3 = by - ay are already in T.
+    };
+    Kind kind = Kind::all;
+    const std::uint64_t* masks = nullptr;
+    std::int64_t e[3]{}, dx[3]{}, dy[3]{};
+    double ax[3]{}, ay[3]{}, d1[3]{}, d3[3]{};
+    bool inclusive[3]{};
+};
+
+// The z-buffer test of one triangle: z = z0 + (a * (px - x0) + b * (py - y0)), error bound err.
+struct DepthPlane {
+    double z0, a, x0, b, y0, err;
     std::int64_t id;
-    int i0;
-    double sx;
 };
-std::uint64_t depth_row(const DepthRow& row, std::uint64_t covered, double* z, double* err,
-                        std::int64_t* ids);
+
+// A tile's z-buffer at the block's first sample, rows `stride` apart. The kernel reads and rewrites (with
+// their own values) up to a vector past the end of a row: the buffers need that much padding.
+struct DepthRows {
+    double* z;
+    double* err;
+    std::int64_t* ids;
+    std::ptrdiff_t stride;
+};
+
+// covered[r]: the covered samples of row r.
+void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
+
+// For every covered sample: written (z, err, id) when the slot is empty and z finite, or when
+// z + err < z' - err' (decided nearer); left when z - err > z' + err' (decided farther). undecided[r]
+// gets the rest of row r, for the exact comparison; returns whether there are any.
+bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
+                 std::uint64_t* undecided);
 
 }  // namespace rast::fast::detail

@@ -14,6 +14,8 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <vector>
 
 namespace rast::fast::detail {
@@ -75,13 +77,23 @@ struct Plane {
     double x0, y0, z0, a, b, err;
 };
 
+// A triangle that covers some sample of the viewport, as every path sees it first: vertices snapped
+// (fixed modes) and counter-clockwise, its pixel bounding box inside the viewport (inclusive) and the
+// path that computes its coverage.
+struct Placed {
+    Corners v;
+    int i_lo, i_hi, j_lo, j_hi;
+    Path path;
+};
+
+// Everything the traversal needs, computed once per triangle.
 struct Setup {
-    bool empty = true;  // covers no sample of the viewport
-    Path path = Path::fixed;
-    int i_lo = 0, i_hi = -1, j_lo = 0, j_hi = -1;  // pixel bounding box inside the viewport, inclusive
-    Corners v{};                                    // counter-clockwise; snapped in the fixed modes
+    Placed p;
     std::array<FixedEdge, 3> fixed{};
     std::array<FloatEdge, 3> flt{};
+    // Float modes: a tile whose samples all have an exact edge function beyond +-margin on the same
+    // side for each edge is classified without evaluating them; +infinity when not computed.
+    double float_margin = std::numeric_limits<double>::infinity();
     Plane plane{};
     std::vector<Span> spans;  // wide path: per sample row, see wide_spans
 };
@@ -96,20 +108,24 @@ bool owns_ties(const Vertex& a, const Vertex& b) {
 }
 
 // Pixels whose samples can lie in [lo, hi] along one axis, given the sample offsets' extent there.
-// Rounding is monotone and the bounds are integers, so floor/ceil of the rounded difference are exact.
+// Rounding is monotone and the bounds are integers, so ceil/floor of the rounded difference are exact.
+// Clamped to [-1, size] first, where truncation to int is exact and ceil/floor are one correction.
 template <Fault F>
 bool pixel_range(double lo, double hi, double o_min, double o_max, int size, int& first, int& last) {
-    double from = std::ceil(lo - o_max), to = std::floor(hi - o_min);
-    if constexpr (F == Fault::bbox_one_short) to -= 1;
-    from = std::max(from, 0.0);
-    to = std::min(to, size - 1.0);
-    if (!(from <= to)) return false;
+    const double from = std::clamp(lo - o_max, -1.0, double(size));
+    const double to = std::clamp(hi - o_min, -1.0, double(size));
     first = static_cast<int>(from);
+    first += first < from;
     last = static_cast<int>(to);
-    return true;
+    last -= last > to;
+    if constexpr (F == Fault::bbox_one_short) last -= 1;
+    first = std::max(first, 0);
+    last = std::min(last, size - 1);
+    return first <= last;
 }
 
-inline Plane make_plane(const Corners& v, const Setup& s, const Context& c) {
+inline Plane make_plane(const Placed& s, const Context& c) {
+    const Corners& v = s.v;
     const double u = kUnitDouble;
     const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x), u), dy1 = sub(exact(v[1].y), exact(v[0].y), u);
     const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x), u), dy2 = sub(exact(v[2].y), exact(v[0].y), u);
@@ -128,43 +144,64 @@ inline Plane make_plane(const Corners& v, const Setup& s, const Context& c) {
     return {v[0].x, v[0].y, v[0].z, a.v, b.v, err};
 }
 
+// Snapping, winding, bounding box and path: nothing when the triangle covers no sample of the viewport.
 template <Fault F>
-Setup setup_triangle(const Triangle& t, const Context& c) {
-    Setup s;
+std::optional<Placed> place(const Triangle& t, const Context& c) {
+    Placed s;
     s.v = snap(t, c.precision).v;
     const int orient = orientation(s.v);
-    if (orient == 0) return s;  // zero area covers nothing
+    if (orient == 0) return std::nullopt;  // zero area covers nothing
     if (orient < 0) std::swap(s.v[1], s.v[2]);
     const auto [xmin, xmax] = std::minmax({s.v[0].x, s.v[1].x, s.v[2].x});
     const auto [ymin, ymax] = std::minmax({s.v[0].y, s.v[1].y, s.v[2].y});
     if (!pixel_range<F>(xmin, xmax, c.ox_min, c.ox_max, c.vp.width, s.i_lo, s.i_hi) ||
         !pixel_range<F>(ymin, ymax, c.oy_min, c.oy_max, c.vp.height, s.j_lo, s.j_hi))
-        return s;
-    std::array<bool, 3> inclusive;
-    for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(s.v[k], s.v[(k + 1) % 3]);
+        return std::nullopt;
+    const double limit = c.coordinate_limit;
+    const bool fits = c.fixed_fits && std::all_of(s.v.begin(), s.v.end(), [limit](const Vertex& p) {
+                          return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
+                      });
+    s.path = !is_fixed(c.precision) ? Path::floating : fits ? Path::fixed : Path::wide;
+    return s;
+}
 
-    if (!is_fixed(c.precision)) {
-        s.path = Path::floating;
-        const bool single = c.precision == Precision::float32;
-        const auto in_type = [single](double x) { return single ? double(float(x)) : x; };
-        for (int k = 0; k < 3; ++k) {
-            const Vertex& p = s.v[k];
-            const Vertex& q = s.v[(k + 1) % 3];
-            const double ax = in_type(p.x), ay = in_type(p.y), bx = in_type(q.x), by = in_type(q.y);
-            // The differences rounded once in the mode's type: float - float is correctly rounded in float.
-            s.flt[k] = {ax, ay, single ? double(float(bx) - float(ax)) : bx - ax,
-                        single ? double(float(by) - float(ay)) : by - ay, inclusive[k]};
-        }
-    } else {
-        const double limit = c.coordinate_limit;
-        const bool fits = c.fixed_fits && std::all_of(s.v.begin(), s.v.end(), [limit](const Vertex& p) {
-                              return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
-                          });
-        if (fits) {
-            s.path = Path::fixed;
+// The float modes' tile margin: the mode's edge error bound plus that of the double evaluation the tile
+// classification makes, rounded up.
+inline double float_margin(const Corners& v, const Context& c) {
+    const Triangle t{v};
+    return (edge_error_bound(t, c.precision, c.vp) + edge_error_bound(t, Precision::float64, c.vp)) *
+           (1 + 0x1p-40);
+}
+
+// classify_tiles: also compute what whole-tile trivial accept / reject needs (worth it for a triangle
+// that spans tiles; a small one is classified by its edge functions alone).
+template <Fault F>
+Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles) {
+    Setup s;
+    s.p = placed;
+    const Corners& v = placed.v;
+    std::array<bool, 3> inclusive;
+    for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(v[k], v[(k + 1) % 3]);
+
+    switch (placed.path) {
+        case Path::floating: {
+            const bool single = c.precision == Precision::float32;
+            const auto in_type = [single](double x) { return single ? double(float(x)) : x; };
             for (int k = 0; k < 3; ++k) {
-                const Vertex& p = s.v[k];
-                const Vertex& q = s.v[(k + 1) % 3];
+                const Vertex& p = v[k];
+                const Vertex& q = v[(k + 1) % 3];
+                const double ax = in_type(p.x), ay = in_type(p.y), bx = in_type(q.x), by = in_type(q.y);
+                // The differences rounded once in the mode's type: float - float is correctly rounded in float.
+                s.flt[k] = {ax, ay, single ? double(float(bx) - float(ax)) : bx - ax,
+                            single ? double(float(by) - float(ay)) : by - ay, inclusive[k]};
+            }
+            if (classify_tiles) s.float_margin = float_margin(v, c);
+            break;
+        }
+        case Path::fixed:
+            for (int k = 0; k < 3; ++k) {
+                const Vertex& p = v[k];
+                const Vertex& q = v[(k + 1) % 3];
                 const double scale = static_cast<double>(std::int64_t{1} << c.bits);
                 const auto fixed = [scale](double x) { return static_cast<std::int64_t>(x * scale); };
                 const std::int64_t ax = fixed(p.x), ay = fixed(p.y);
@@ -172,13 +209,12 @@ Setup setup_triangle(const Triangle& t, const Context& c) {
                 // E >= 0 on an owning edge, E > 0 (E - 1 >= 0 for integers) on the others.
                 s.fixed[k] = {a, b, -(a * ax + b * ay) - (inclusive[k] ? 0 : 1)};
             }
-        } else {
-            s.path = Path::wide;
-            s.spans = wide_spans(s.v, c.bits, inclusive, c.offsets, s.i_lo, s.i_hi, s.j_lo, s.j_hi);
-        }
+            break;
+        case Path::wide:
+            s.spans = wide_spans(v, c.bits, inclusive, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi);
+            break;
     }
-    s.plane = make_plane(s.v, s, c);
-    s.empty = false;
+    s.plane = make_plane(placed, c);
     return s;
 }
 

@@ -24,11 +24,15 @@ constexpr bool is_fixed(Precision p) { return subpixel_bits(p) != 0; }
 
 // x rounded to the nearest multiple of 2^-bits. Scaling by a power of two is exact, and a double of
 // magnitude >= 2^(52-bits) is already a multiple of 2^-bits (its ulp is at least that), which also
-// keeps x·2^bits from overflowing. std::nearbyint rounds ties to even under the default rounding mode.
+// keeps x·2^bits from overflowing. Below that, adding 2^52 (with x's sign) leaves no fraction bits, so
+// the sum is rounded to an integer, ties to even, under the default rounding mode; subtracting it back
+// is exact, and copysign keeps the sign of a zero result as std::nearbyint would.
 inline double snap_coordinate(double x, int bits) {
     const double scale = static_cast<double>(std::int64_t{1} << bits);  // multiplying by it is exact
-    if (!(std::abs(x) * scale < 0x1p52)) return x;
-    return std::nearbyint(x * scale) / scale;
+    const double scaled = x * scale;
+    if (!(std::abs(scaled) < 0x1p52)) return x;
+    const double shift = std::copysign(0x1p52, scaled);
+    return std::copysign((scaled + shift) - shift, scaled) / scale;
 }
 
 }  // namespace rast::fast::detail

@@ -1,0 +1,80 @@
+// Blocks of a few pixels in scalar code: a tiny triangle's block is smaller than the vector setup of a
+// kernel call (kernels.h) costs. Sample by sample, the same operations as the kernels, so the result is
+// bit-identical to theirs.
+#pragma once
+
+#include "kernels.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+namespace rast::fast::detail {
+
+// The float edges of Coverage on row r of block b, in T.
+template <class T>
+std::uint64_t float_row_coverage(const Block& b, const Coverage& cov, int r) {
+    const T py = T(double(b.j0 + r) + b.sy);
+    std::uint64_t covered = 0;
+    T t1[3];
+    for (int e = 0; e < 3; ++e) t1[e] = T(cov.d1[e]) * (py - T(cov.ay[e]));
+    for (int k = 0; k < b.width; ++k) {
+        const T px = T(b.i0 + k) + T(b.sx);
+        bool inside = true;
+        for (int e = 0; e < 3; ++e) {
+            const T value = t1[e] - T(cov.d3[e]) * (px - T(cov.ax[e]));
+            inside = inside && (value > 0 || (value == 0 && cov.inclusive[e]));
+        }
+        covered |= std::uint64_t{inside} << k;
+    }
+    return covered;
+}
+
+// Row r of block b as Coverage defines it.
+inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
+    switch (cov.kind) {
+        case Coverage::Kind::all: return b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
+        case Coverage::Kind::masks: return cov.masks[r];
+        case Coverage::Kind::fixed: {
+            std::int64_t e0 = cov.e[0] + r * cov.dy[0], e1 = cov.e[1] + r * cov.dy[1], e2 = cov.e[2] + r * cov.dy[2];
+            std::uint64_t covered = 0;
+            for (int k = 0; k < b.width; ++k, e0 += cov.dx[0], e1 += cov.dx[1], e2 += cov.dx[2])
+                covered |= std::uint64_t{(e0 | e1 | e2) >= 0} << k;
+            return covered;
+        }
+        case Coverage::Kind::float32: return float_row_coverage<float>(b, cov, r);
+        case Coverage::Kind::float64: return float_row_coverage<double>(b, cov, r);
+    }
+    return 0;
+}
+
+// depth_block (kernels.h), one sample at a time.
+inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, DepthRows rows,
+                               std::uint64_t* undecided) {
+    bool any = false;
+    for (int r = 0; r < b.rows; ++r) {
+        const double py = double(b.j0 + r) + b.sy;
+        const double b_dy = p.b * (py - p.y0);
+        std::uint64_t open = 0;
+        for (std::uint64_t m = row_coverage(b, cov, r); m != 0; m &= m - 1) {
+            const int k = std::countr_zero(m);
+            const double px = double(b.i0 + k) + b.sx;
+            const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
+            const std::ptrdiff_t at = r * rows.stride + k;
+            const bool empty = rows.ids[at] < 0;
+            const double stored = rows.z[at], stored_err = rows.err[at];
+            if (empty ? std::isfinite(z) : z + p.err < stored - stored_err) {
+                rows.z[at] = z;
+                rows.err[at] = p.err;
+                rows.ids[at] = p.id;
+            } else if (empty || !(z - p.err > stored + stored_err)) {
+                open |= std::uint64_t{1} << k;
+            }
+        }
+        undecided[r] = open;
+        any = any || open != 0;
+    }
+    return any;
+}
+
+}  // namespace rast::fast::detail
