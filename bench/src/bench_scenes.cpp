@@ -147,7 +147,7 @@ void subnormals(const SceneSpec& spec, Random& r, std::vector<Triangle>& out) {
     };
     const double top = spec.viewport.height;
     for (std::size_t k = 0; k < spec.triangles; ++k) {
-        const Point apex{r.uniform(1, spec.viewport.width), r.uniform(0, top)};
+        const Point apex{r.uniform(1, 8), r.uniform(0, top)};
         out.push_back(triangle({subnormal(), 0}, {subnormal(), top}, apex));
     }
 }

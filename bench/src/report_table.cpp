@@ -37,7 +37,7 @@ std::string scenes_table(const std::vector<SceneInfo>& scenes) {
 
 std::string errors_table(const std::vector<ErrorRow>& errors, const char* scene_heading) {
     std::string out = row({scene_heading, "engine", "samples", "misclassified samples", "triangles affected",
-                           "ids differing", "depths differing (bits)", "worst |Δz|", "watertight violations"}) +
+                           "ids differing", "depths differing (bits)", "worst abs. Δz", "watertight violations"}) +
                       row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:"});
     for (const ErrorRow& e : errors) {
         out += row({e.scene, e.engine, std::to_string(e.samples), count(e.misclassified),
@@ -73,7 +73,7 @@ std::string speed_table(const std::vector<SpeedRow>& speed) {
 }
 
 std::string aa_tables(const Report& report) {
-    std::string out = row({"scene", "samples/pixel", "pixels", "mean |error|", "worst |error|"}) +
+    std::string out = row({"scene", "samples/pixel", "pixels", "mean abs. error", "worst abs. error"}) +
                       row({"---", "---:", "---:", "---:", "---:"});
     for (const AaRow& a : report.aa) {
         out += row({a.scene, std::to_string(a.error.samples), std::to_string(a.error.pixels),

@@ -30,8 +30,9 @@ enum class Shape {
     fan,           // closed fans of 3 to 8 triangles around pixel centres, 4 to 16 px across
     centre_edges,  // vertices on the half-pixel lattice, up to 16 px across: many edges, horizontal
                    // and vertical ones included, run exactly through pixel centres
-    subnormal,     // an edge from (s0, 0) to (s1, H), s0 and s1 subnormal of either sign: it passes the
-                   // 16x pattern's samples on x = 0 at subnormal distances, on either side
+    subnormal,     // an edge from (s0, 0) to (s1, H), s0 and s1 subnormal of either sign, and an apex 1 to
+                   // 8 px right of it: the edge passes the 16x pattern's samples on x = 0 at subnormal
+                   // distances, on either side
     sliver,        // near zero area: 16 to 256 px long, the apex 2^-50 to 2^-9 px off the long edge (or, rounded, on it)
 };
 
