@@ -19,6 +19,7 @@
 #include <exception>
 #include <fstream>
 #include <ostream>
+#include <span>
 #include <string>
 
 namespace rast::bench {
@@ -140,8 +141,7 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
         progress << ", " << fast::name(mode) << std::flush;
         const Framebuffer result = fast::render(scene, {mode, 1});  // also the warm-up
         rows.push_back(error_row(s.info, std::string(fast::name(mode)), compare_buffers(exact, result)));
-        for (const int threads : kThreads) {
-            if (!time) break;
+        for (const int threads : time ? std::span<const int>(kThreads) : std::span<const int>()) {
             speed.push_back(speed_row(s.info, std::string(fast::name(mode)), threads,
                                       time_runs([&] { fast::render(scene, {mode, threads}); }, plan.runs)));
         }
@@ -156,11 +156,15 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
     if (scene.samples == 1) {
         progress << ", llvmpipe" << std::flush;
         try {
-            for (const int threads : kThreads) {
+            // Untimed, one draw on one thread is enough for the error.
+            const std::span<const int> thread_counts = time ? std::span<const int>(kThreads)
+                                                            : std::span<const int>(kThreads).first(1);
+            for (const int threads : thread_counts) {
                 LlvmpipeDraws draws = time_llvmpipe_draws(scene, threads, time ? plan.runs : 1);
                 if (time) speed.push_back(speed_row(s.info, "llvmpipe", threads, std::move(draws.seconds)));
-                if (threads == kThreads.front()) rows.push_back(error_row(s.info, "llvmpipe", compare_buffers(exact, draws.result)));
-                if (!time) break;
+                if (threads == kThreads.front()) {
+                    rows.push_back(error_row(s.info, "llvmpipe", compare_buffers(exact, draws.result)));
+                }
             }
         } catch (const std::exception& e) {
             notes.push_back("llvmpipe skipped on " + s.info.name + ": " + e.what());

@@ -101,8 +101,17 @@ std::string format_table(const Report& report) {
     if (!report.command.empty()) out += "Command: `" + report.command + "`\n";
     if (!report.scenes.empty()) {
         out += "\n### Scenes\n\n" + scenes_table(report.scenes);
-        out += "\n### Speed\n\n" + speed_table(report.speed);
-        out += "\n### Error against the exact reference\n\n" + errors_table(report.errors, "scene");
+        out += "\n### Speed\n\n"
+               "Wall time per render, median and range over the runs (the exact reference gets fewer). Samples/s\n"
+               "counts the samples covered before the depth test. Ratios divide medians of this run: the\n"
+               "reference's (one thread), and llvmpipe's on as many threads.\n\n" +
+               speed_table(report.speed);
+        out += "\n### Error against the exact reference\n\n"
+               "Misclassified: samples covered by a mode or by the reference but not both, triangle by\n"
+               "triangle (llvmpipe offers only its framebuffer). Ids and depths: framebuffer samples that differ\n"
+               "(llvmpipe's depth buffer is 24-bit). Watertight violations, on meshes: samples whose winding\n"
+               "count differs from the exact one of the geometry the mode rasterizes (cracks, double covers).\n\n" +
+               errors_table(report.errors, "scene");
     }
     if (!report.hard_cases.empty()) {
         out += "\n### Hard cases\n\n" + scenes_table(report.hard_families) + "\n" +
