@@ -6,7 +6,7 @@
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -84,9 +84,10 @@ rc::Gen<std::vector<Triangle>> polygon_triangulation(Viewport vp, int bits) {
             points.push_back({x, y, *depth()});
         }
         points = distinct(points);
-        CGAL::Polygon_2<Kernel> polygon;
-        for (const Vertex& p : points) polygon.push_back(Point(p.x, p.y));
-        if (points.size() < 3 || !polygon.is_simple()) return std::vector<Triangle>{};
+        std::vector<Point> corners_seen;
+        for (const Vertex& p : points) corners_seen.emplace_back(p.x, p.y);
+        if (points.size() < 3 || !CGAL::is_simple_2(corners_seen.begin(), corners_seen.end(), Kernel()))
+            return std::vector<Triangle>{};
 
         using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel>;
         using Tds = CGAL::Triangulation_data_structure_2<VertexBase, Fb>;
