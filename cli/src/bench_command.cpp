@@ -38,8 +38,8 @@ std::string command_line(const BenchOptions& o) {
 }
 
 std::string markdown(const bench::Report& report, const BenchOptions& o) {
-    std::string out = "# rast bench: speed against error\n\nMade by `" + report.command +
-                      "`; every figure below comes from that one run.\n\n";
+    std::string out = "# rast bench: speed against error\n\n"
+                      "Every figure below comes from one run of the command shown under the machine.\n\n";
     if (!o.plot_out.empty()) {
         const auto plot = std::filesystem::relative(std::filesystem::absolute(o.plot_out),
                                                     std::filesystem::absolute(o.markdown_out).parent_path());
