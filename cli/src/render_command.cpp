@@ -82,10 +82,14 @@ void run_render(const RenderOptions& o) {
               << "engine:  " << o.engine.describe() << ", " << ms << " ms\n"
               << "covered: " << covered << " of " << fb.ids.size() << " samples\n";
     if (o.engine.is_reference()) {
-        std::cout << "exact:   " << stats.orientation_exact << " of " << stats.orientation_tests
-                  << " orientation tests (" << percent(stats.orientation_exact, stats.orientation_tests)
-                  << "), " << stats.depth_exact << " of " << stats.depth_tests << " depth comparisons ("
-                  << percent(stats.depth_exact, stats.depth_tests) << ") needed exact arithmetic\n";
+        // How often the floating-point filters could not decide and exact arithmetic ran.
+        const auto line = [](std::uint64_t exact, std::uint64_t all, const char* what) {
+            std::cout << "  " << exact << " of " << all << ' ' << what << " (" << percent(exact, all) << ")\n";
+        };
+        std::cout << "exact arithmetic needed for:\n";
+        line(stats.orientation_exact, stats.orientation_tests, "orientation tests");
+        line(stats.depth_exact, stats.depth_tests, "depth comparisons");
+        line(stats.depth_nearest_exact, stats.samples_covered, "depths rounded to nearest");
     }
 
     const bool want_area = o.coverage == "area" || !o.coverage_out.empty();
