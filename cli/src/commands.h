@@ -9,7 +9,6 @@ namespace rast::cli {
 void add_render_command(CLI::App& app);
 void add_replay_command(CLI::App& app, int& status);
 void add_check_command(CLI::App& app, int& status);
-void add_bench_command(CLI::App& app);  // only with RAST_BUILD_BENCH (it needs the llvmpipe peer)
 void add_diff_command(CLI::App& app);
 void add_bench_command(CLI::App& app);  // only with RAST_BUILD_BENCH (it needs the llvmpipe peer)
 

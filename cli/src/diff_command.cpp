@@ -27,7 +27,6 @@ struct DiffOptions {
 // picture pixels, so that single pixels are visible.
 constexpr int kMinimumSide = 512;
 constexpr std::array<std::uint8_t, 3> kDisagree{255, 0, 255};
-constexpr std::array<std::uint8_t, 3> kSeparator{128, 128, 128};
 
 // Where the two agree, the reference dimmed to a quarter; where any sample differs, the loud colour,
 // as strong as the share of samples that differ (but never fainter than half).
@@ -45,25 +44,6 @@ Image disagreement(const Framebuffer& a, const Framebuffer& b, const Image& refe
     return out;
 }
 
-// The panels left to right, each magnified by `scale`, with a separator of `scale` pixels between.
-Image side_by_side(const std::vector<Image>& panels, int scale) {
-    const int w = panels.front().width, h = panels.front().height;
-    const int n = static_cast<int>(panels.size());
-    Image out(n * w * scale + (n - 1) * scale, h * scale);
-    for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x) {
-            const int panel = x / ((w + 1) * scale), inside = x % ((w + 1) * scale);
-            std::uint8_t* px = out.at(x, y);
-            if (inside >= w * scale) {
-                std::copy(kSeparator.begin(), kSeparator.end(), px);
-                continue;
-            }
-            const auto& from = panels[panel];
-            const std::uint8_t* src = &from.rgb[(static_cast<std::size_t>(y / scale) * w + inside / scale) * 3];
-            std::copy(src, src + 3, px);
-        }
-    return out;
-}
 
 void run_diff(const DiffOptions& o) {
     Scene scene = load_scene(o.scene_path, o.view);

@@ -4,6 +4,7 @@
 
 #include <png.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -48,6 +49,26 @@ Image resolve_ids(const Framebuffer& fb) {
         }
     }
     return image;
+}
+
+// The panels left to right, each magnified by `scale`, with a separator of `scale` pixels between.
+Image side_by_side(const std::vector<Image>& panels, int scale) {
+    const int w = panels.front().width, h = panels.front().height;
+    const int n = static_cast<int>(panels.size());
+    Image out(n * w * scale + (n - 1) * scale, h * scale);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            const int panel = x / ((w + 1) * scale), inside = x % ((w + 1) * scale);
+            std::uint8_t* px = out.at(x, y);
+            if (inside >= w * scale) {
+                std::fill(px, px + 3, std::uint8_t{128});
+                continue;
+            }
+            const auto& from = panels[panel];
+            const std::uint8_t* src = &from.rgb[(static_cast<std::size_t>(y / scale) * w + inside / scale) * 3];
+            std::copy(src, src + 3, px);
+        }
+    return out;
 }
 
 void write_png(const std::filesystem::path& path, const Image& image) {

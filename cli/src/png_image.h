@@ -28,6 +28,10 @@ std::array<std::uint8_t, 3> id_colour(std::int32_t id);
 // top row (j = H - 1) comes first.
 Image resolve_ids(const Framebuffer& fb);
 
+// Equally sized panels left to right, each magnified by `scale` (nearest neighbour, so single pixels stay
+// sharp), with a grey separator `scale` pixels wide between them. One panel: just the magnification.
+Image side_by_side(const std::vector<Image>& panels, int scale);
+
 // Encodes as PNG and writes the file atomically.
 void write_png(const std::filesystem::path& path, const Image& image);
 

@@ -29,6 +29,7 @@ struct RenderOptions {
     MeshView view;
     std::optional<int> samples;
     std::string image_out;
+    int magnify = 1;
     std::string coverage = "samples";
     std::string ids_out, depth_out, coverage_out;
 };
@@ -95,7 +96,8 @@ void run_render(const RenderOptions& o) {
     const bool want_area = o.coverage == "area" || !o.coverage_out.empty();
     const auto area = want_area ? reference::coverage_area(scene) : std::vector<reference::Rational>{};
     if (!o.image_out.empty()) {
-        write_png(o.image_out, o.coverage == "area" ? area_image(scene.viewport, area) : resolve_ids(fb));
+        const Image picture = o.coverage == "area" ? area_image(scene.viewport, area) : resolve_ids(fb);
+        write_png(o.image_out, o.magnify == 1 ? picture : side_by_side({picture}, o.magnify));
         std::cout << "wrote " << o.image_out << '\n';
     }
     if (!o.ids_out.empty() || !o.depth_out.empty()) {
@@ -122,6 +124,9 @@ void add_render_command(CLI::App& app) {
     cmd->add_option("--samples", o->samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
         ->check(CLI::IsMember({1, 4, 8, 16}));
     cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour");
+    cmd->add_option("--magnify", o->magnify, "Magnify the picture N times, nearest neighbour, so pixels stay sharp")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
     cmd->add_option("--coverage", o->coverage,
                     "What the picture shows: 'samples' (ids, samples averaged) or 'area' (exact area coverage)")
         ->check(CLI::IsMember({"samples", "area"}))

@@ -114,7 +114,7 @@ TEST_F(Cli, HelpExplainsEveryOption) {
     const Result r = rast("render --help");
     EXPECT_EQ(r.status, 0);
     for (const char* option : {"--engine", "--precision", "--threads", "--samples", "--output", "--ids-out",
-                               "--depth-out", "--coverage-out", "--coverage", "--width", "--height", "--eye",
+                               "--depth-out", "--coverage-out", "--coverage", "--magnify", "--width", "--height", "--eye",
                                "--target", "--up", "--fov", "--near", "--far", "--default"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
