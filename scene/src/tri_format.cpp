@@ -19,7 +19,18 @@ namespace rast {
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+// A line ends at '\n' or "\r\n", for the reader and the writer alike; a carriage return anywhere else is
+// neither a line break nor a blank, so it is rejected rather than kept in a value that would not write back.
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+// The line as std::getline gave it, without the '\r' of a "\r\n" line break.
+std::string_view line_content(const std::string& line, const std::string& file, std::int64_t line_number) {
+    std::string_view text(line);
+    if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+    if (text.find('\r') != std::string_view::npos)
+        throw ParseError(file, line_number, "a carriage return inside the line (a line ends with '\\n' or '\\r\\n')");
+    return text;
+}
 
 bool is_key_char(char c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
@@ -83,11 +94,11 @@ TriDocument read_tri_document(std::istream& in, const std::string& name) {
     std::string line;
     while (std::getline(in, line)) {
         ++line_number;
-        const std::string_view text = std::string_view(line).substr(0, line.find('#'));
-        const std::vector<std::string> tokens = detail::split_tokens(text);
+        const std::string_view content = line_content(line, name, line_number);
+        const std::vector<std::string> tokens = detail::split_tokens(content.substr(0, content.find('#')));
         if (tokens.empty()) {
             if (in_header)
-                if (auto entry = header_entry(line)) doc.header.push_back(std::move(*entry));
+                if (auto entry = header_entry(content)) doc.header.push_back(std::move(*entry));
             continue;
         }
         in_header = false;
@@ -157,7 +168,7 @@ void write_tri(std::ostream& out, const Scene& scene, const TriHeader& header) {
                                         " must be letters, digits, '_', '-' or '.'");
         if (value.find_first_of("\n\r") != std::string::npos || trim(value) != value)
             throw std::invalid_argument("write_tri: the value of header key '" + key +
-                                        "' has a line break or surrounding blanks");
+                                        "' has a line feed, a carriage return or surrounding blanks");
     }
     for (std::size_t id = 0; id < scene.triangles.size(); ++id)
         for (const Vertex& v : scene.triangles[id].v)

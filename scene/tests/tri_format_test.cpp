@@ -125,12 +125,35 @@ TEST(TriFormat, WriteRefusesWhatWouldNotReadBack) {
     EXPECT_THROW(write_tri(out, scene, {{"bad key", "v"}}), std::invalid_argument);
     EXPECT_THROW(write_tri(out, scene, {{"why", "two\nlines"}}), std::invalid_argument);
     EXPECT_THROW(write_tri(out, scene, {{"why", " padded"}}), std::invalid_argument);
+    EXPECT_THROW(write_tri(out, scene, {{"why", "a\rb"}}), std::invalid_argument);
     scene.triangles.push_back(Triangle{{{{0, 0, 0}, {1, 0, std::nan("")}, {0, 1, 0}}}});
     EXPECT_THROW(write_tri(out, scene), std::invalid_argument);
     scene.triangles.clear();
     scene.samples = 3;
     EXPECT_THROW(write_tri(out, scene), std::invalid_argument);
     EXPECT_EQ(out.str(), "");
+}
+
+// The fuzzer's finding: "a\rb" was read as a header value that write_tri then refused.
+TEST(TriFormat, RejectsACarriageReturnInsideALine) {
+    EXPECT_EQ(error_of("# why: a\rb\nviewport 1 1\n"),
+              "s.tri:1: a carriage return inside the line (a line ends with '\\n' or '\\r\\n')");
+    EXPECT_EQ(error_of("viewport 1 1\r\nviewport\r1 1\r\n"),
+              "s.tri:2: a carriage return inside the line (a line ends with '\\n' or '\\r\\n')");
+    EXPECT_EQ(error_of("viewport 1 1\r\r\n"),
+              "s.tri:1: a carriage return inside the line (a line ends with '\\n' or '\\r\\n')");
+}
+
+TEST(TriFormat, CrLfHeaderWritesBackAndReadsBackEqual) {
+    std::istringstream crlf("# why: a b\r\n#seed:\r\nviewport 2 1\r\ntri 0 0 0 2 0 0 0 1 0");
+    const TriDocument doc = read_tri_document(crlf, "crlf.tri");
+    EXPECT_EQ(doc.header, (TriHeader{{"why", "a b"}, {"seed", ""}}));
+    std::stringstream text;
+    write_tri(text, doc.scene, doc.header);
+    const TriDocument back = read_tri_document(text, "back.tri");
+    EXPECT_EQ(back.header, doc.header);
+    EXPECT_EQ(back.scene.viewport, (Viewport{2, 1}));
+    EXPECT_EQ(back.scene.triangles, doc.scene.triangles);
 }
 
 TEST(TriFormat, HeaderIsTheLeadingKeyValueComments) {

@@ -6,7 +6,8 @@
 //   samples N                    at most once; 1, 4, 8 or 16; default 1
 //   tri x0 y0 z0  x1 y1 z1  x2 y2 z2
 //
-// '#' starts a comment anywhere. Numbers are read exactly as strtod reads them in the C locale, hex-float
+// '#' starts a comment anywhere. A line ends with '\n' or "\r\n" (the last may end the file instead); a
+// carriage return anywhere else is an error, so every value read writes back. Numbers are read exactly as strtod reads them in the C locale, hex-float
 // or decimal, and must be finite. Sizes are bounded by rast/scene_limits.h.
 #pragma once
 
