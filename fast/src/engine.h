@@ -173,6 +173,23 @@ struct TileBuffer {
     void clear() {
         std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
         std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
+        far = std::numeric_limits<double>::infinity();
+        since_far = 0;
+    }
+    // far := the largest z + err over the samples of pixels [0, width) x [0, height), +infinity while
+    // any is empty. Stored depths only ever come nearer, so an old far stays an upper bound.
+    void refresh_far(int samples, int width, int height) {
+        since_far = 0;
+        double largest = -std::numeric_limits<double>::infinity();
+        for (int s = 0; s < samples; ++s)
+            for (int row = 0; row < height; ++row) {
+                const std::size_t from = at(s, row, 0);
+                for (std::size_t k = from; k < from + static_cast<std::size_t>(width); ++k) {
+                    if (ids[k] < 0) return;
+                    largest = std::max(largest, z[k] + err[k]);
+                }
+            }
+        far = largest;
     }
     std::size_t at(int s, int row, int col) const {
         return (static_cast<std::size_t>(s) * kTile + row) * kTile + col;
@@ -180,7 +197,26 @@ struct TileBuffer {
     std::size_t size;
     std::vector<double> z, err;
     std::vector<std::int64_t> ids;
+    double far = std::numeric_limits<double>::infinity();
+    std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
 };
+
+// A tile's far depth is brought up to date once blocks of this many times its samples were rasterized
+// into it: the refresh reads the tile once, amortized over at least as many block samples.
+inline constexpr std::size_t kFarRefresh = 4;
+
+// Hierarchical z: whether the triangle is behind everything stored in the tile at every sample of
+// [i0, i1] x [j0, j1]. Its plane's smallest value there is at a corner of the samples' rectangle (inside
+// the bounding box its error bound covers). As in the kernels' depth test, err and the stored err are
+// four times the bounds on the distance from the exact planes, which absorbs the rounding of the
+// comparison: the exact depths are then strictly ordered, and the triangle wins no sample.
+inline bool behind_tile(const Setup& t, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
+    const Plane& p = t.plane;
+    const double px = p.a >= 0 ? i0 + c.ox_min : i1 + c.ox_max;
+    const double py = p.b >= 0 ? j0 + c.oy_min : j1 + c.oy_max;
+    const double nearest = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+    return nearest - p.err > tile.far;
+}
 
 // Pixels [i0, i1] x [j0, j1] of the viewport: one tile.
 struct TileRect {
@@ -236,7 +272,10 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     const int i0 = std::max(rect.i0, t.p.i_lo), i1 = std::min(rect.i1, t.p.i_hi);
     const int j0 = std::max(rect.j0, t.p.j_lo), j1 = std::min(rect.j1, t.p.j_hi);
     const TileClass cls = classify(t, c, i0, i1, j0, j1);
-    if (cls == TileClass::reject) return;
+    if (cls == TileClass::reject || behind_tile(t, c, tile, i0, i1, j0, j1)) return;
+    tile.since_far += static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size();
+    if (tile.since_far >= kFarRefresh * tile.size)
+        tile.refresh_far(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
     const DepthPlane plane{t.plane.z0, t.plane.a, t.plane.x0, t.plane.b, t.plane.y0, t.plane.err, id};
     std::uint64_t masks[kTile], undecided[kTile];
     for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
