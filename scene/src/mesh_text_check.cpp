@@ -6,72 +6,13 @@
 #include <fstream>
 #include <vector>
 
-#include "number_token.h"
+#include "ply_check.h"
 #include "rast/parse_error.h"
+#include "token_lines.h"
 
 namespace rast::detail {
 
 namespace {
-
-// The non-blank lines of a text file as tokens, with their line numbers.
-class TokenLines {
-public:
-    TokenLines(std::istream& in, std::string file, bool hash_comments)
-        : in_(in), file_(std::move(file)), hash_comments_(hash_comments) {}
-
-    bool next() {
-        std::string text;
-        while (std::getline(in_, text)) {
-            ++line_;
-            if (hash_comments_) text.erase(std::min(text.find('#'), text.size()));
-            tokens_ = split_tokens(text);
-            if (!tokens_.empty()) return true;
-        }
-        if (in_.bad()) throw ParseError(file_, 0, "read error after line " + std::to_string(line_));
-        tokens_.clear();
-        return false;
-    }
-    // Like next(), but the end of the file is an error: it ends before `what`.
-    void expect(const std::string& what) {
-        if (!next()) fail("the file ends before " + what);
-    }
-
-    const std::vector<std::string>& tokens() const { return tokens_; }
-    std::size_t size() const { return tokens_.size(); }
-    const std::string& operator[](std::size_t k) const { return tokens_[k]; }
-    double number(std::size_t k) const { return parse_finite_double(tokens_[k], file_, line_); }
-    long long integer(std::size_t k) const { return integer(tokens_[k]); }
-    long long integer(const std::string& text) const { return parse_integer(text, file_, line_); }
-    [[noreturn]] void fail(const std::string& what) const { throw ParseError(file_, line_, what); }
-
-private:
-    std::istream& in_;
-    std::string file_;
-    bool hash_comments_;
-    std::int64_t line_ = 0;
-    std::vector<std::string> tokens_;
-};
-
-std::string values(std::size_t n) { return std::to_string(n) + (n == 1 ? " value" : " values"); }
-
-// Every vertex index of one face: in [0, vertex_count) and each used once (OpenMesh drops such faces).
-class FaceCheck {
-public:
-    FaceCheck(const TokenLines& in, long long vertex_count) : in_(in), vertex_count_(vertex_count) {}
-    void add(long long index, const std::string& as_written) {
-        if (index < 0 || index >= vertex_count_)
-            in_.fail("vertex index " + as_written + " is out of range (" + std::to_string(vertex_count_) +
-                     " vertices)");
-        if (std::find(used_.begin(), used_.end(), index) != used_.end())
-            in_.fail("the face uses vertex " + as_written + " twice");
-        used_.push_back(index);
-    }
-
-private:
-    const TokenLines& in_;
-    long long vertex_count_;
-    std::vector<long long> used_;
-};
 
 MeshFileCheck check_obj(TokenLines& in) {
     MeshFileCheck result{0, std::nullopt};
@@ -84,7 +25,7 @@ MeshFileCheck check_obj(TokenLines& in) {
         } else if (in[0] == "f") {
             if (in.size() < 4) in.fail("'f' expects at least 3 vertices, got " + values(in.size() - 1));
             // OBJ counts from 1; a negative index counts back from the last vertex so far.
-            FaceCheck face(in, vertices);
+            FaceCheck face(in.file(), in.line(), vertices);
             for (std::size_t k = 1; k < in.size(); ++k) {
                 const std::string written = in[k].substr(0, in[k].find('/'));
                 const long long index = in.integer(written);
@@ -134,79 +75,12 @@ MeshFileCheck check_off(TokenLines& in) {
         if (n < 3) in.fail("a face needs at least 3 vertices, got " + std::to_string(n));
         if (static_cast<long long>(in.size()) - 1 < n)
             in.fail("the face lists " + std::to_string(n) + " vertices but gives " + values(in.size() - 1));
-        FaceCheck face(in, vertex_count);
+        FaceCheck face(in.file(), in.line(), vertex_count);
         for (long long k = 1; k <= n; ++k) face.add(in.integer(static_cast<std::size_t>(k)), in[static_cast<std::size_t>(k)]);
         for (std::size_t k = static_cast<std::size_t>(n) + 1; k < in.size(); ++k) in.number(k);
         *result.triangles += static_cast<std::size_t>(n) - 2;
         text += joined(in);
     }
-    return result;
-}
-
-struct PlyProperty {
-    std::string name;
-    bool list = false;
-};
-
-struct PlyElement {
-    std::string name;
-    long long count = 0;
-    std::vector<PlyProperty> properties;
-};
-
-MeshFileCheck check_ply(TokenLines& in) {
-    in.expect("the PLY header");
-    if (in.size() != 1 || in[0] != "ply") in.fail("expected 'ply' on the first line");
-    std::vector<PlyElement> elements;
-    for (in.expect("'end_header'"); in[0] != "end_header"; in.expect("'end_header'")) {
-        if (in[0] == "format") {
-            if (in.size() != 3) in.fail("expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
-            if (in[1] != "ascii") return {};  // binary: OpenMesh reads it, the finite check follows
-        } else if (in[0] == "element") {
-            if (in.size() != 3) in.fail("expected 'element NAME COUNT'");
-            elements.push_back({in[1], in.integer(2), {}});
-            if (elements.back().count < 0) in.fail("negative element count");
-        } else if (in[0] == "property") {
-            if (elements.empty()) in.fail("'property' before any 'element'");
-            const bool list = in.size() == 5 && in[1] == "list";
-            if (!list && in.size() != 3) in.fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
-            elements.back().properties.push_back({in[in.size() - 1], list});
-        } else if (in[0] != "comment" && in[0] != "obj_info") {
-            in.fail("unknown PLY header keyword " + quote_token(in[0]));
-        }
-    }
-    MeshFileCheck result{0, std::nullopt};
-    long long vertex_count = 0;
-    for (const PlyElement& e : elements)
-        if (e.name == "vertex") vertex_count = e.count;
-    for (const PlyElement& e : elements)
-        for (long long row = 0; row < e.count; ++row) {
-            in.expect(e.name + " " + std::to_string(row) + " of " + std::to_string(e.count));
-            std::size_t at = 0;
-            for (const PlyProperty& p : e.properties) {
-                if (at >= in.size()) in.fail("too few values for element '" + e.name + "': " + values(in.size()));
-                if (!p.list) {
-                    in.number(at++);
-                    continue;
-                }
-                const long long n = in.integer(at++);
-                if (n < 0 || n > static_cast<long long>(in.size() - at))
-                    in.fail("list '" + p.name + "' of " + std::to_string(n) + " items does not fit the line");
-                const bool indices = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
-                if (indices && n < 3) in.fail("a face needs at least 3 vertices, got " + std::to_string(n));
-                if (indices) *result.triangles += static_cast<std::size_t>(n) - 2;
-                FaceCheck face(in, vertex_count);
-                for (long long k = 0; k < n; ++k, ++at) {
-                    if (indices)
-                        face.add(in.integer(at), in[at]);
-                    else
-                        in.number(at);
-                }
-            }
-            if (at != in.size())
-                in.fail("too many values for element '" + e.name + "': " + values(in.size()) + ", expected " +
-                        std::to_string(at));
-        }
     return result;
 }
 
@@ -265,24 +139,23 @@ void check_binary_stl(std::istream& in, std::uint32_t count, const std::string& 
 }  // namespace
 
 MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension) {
+    const std::string file = path.string();
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw ParseError(path.string(), 0, "cannot open");
+    if (!in) throw ParseError(file, 0, "cannot open");
+    const std::uintmax_t size = std::filesystem::file_size(path);
+    if (extension == "ply") return check_ply(in, file, size);
     if (extension == "stl") {
-        if (const auto count = binary_stl_triangles(in, std::filesystem::file_size(path))) {
-            check_binary_stl(in, *count, path.string());
+        if (const auto count = binary_stl_triangles(in, size)) {
+            check_binary_stl(in, *count, file);
             return {};
         }
         in.clear();
         in.seekg(0);
-        TokenLines lines(in, path.string(), false);
+        TokenLines lines(in, file, false);
         check_ascii_stl(lines);
         return {};
     }
-    if (extension == "ply") {
-        TokenLines lines(in, path.string(), false);
-        return check_ply(lines);
-    }
-    TokenLines lines(in, path.string(), true);
+    TokenLines lines(in, file, true);
     return extension == "obj" ? check_obj(lines) : check_off(lines);
 }
 

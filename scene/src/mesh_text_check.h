@@ -10,7 +10,7 @@
 namespace rast::detail {
 
 struct MeshFileCheck {
-    // For OBJ, OFF and ASCII PLY, the faces OpenMesh must produce: the sum of (corners - 2) over the
+    // For OBJ, OFF and PLY, the faces OpenMesh must produce: the sum of (corners - 2) over the
     // polygons, which it triangulates as a fan. Then a face it dropped is noticed.
     std::optional<std::size_t> triangles;
     // For ASCII OFF, the file rewritten for OpenMesh's OFF reader, which reads nothing from a file with
@@ -20,9 +20,9 @@ struct MeshFileCheck {
 
 // For OBJ, OFF, ASCII PLY and ASCII STL (extension lower case, without the dot): throws ParseError with
 // file and line for a malformed or non-finite number, a wrong count of values, a face index out of range or
-// repeated within a face, or a file that ends early. For binary STL: a non-finite coordinate (OpenMesh
-// merges STL corners by position, and NaN would merge with anything). Other binary files are left to
-// OpenMesh and the finite check after it.
+// repeated within a face, or a file that ends early. For PLY, ASCII or binary, see ply_check.h. For binary
+// STL: a non-finite coordinate (OpenMesh merges STL corners by position, and NaN would merge with
+// anything). Binary OFF is left to OpenMesh and the finite check after it.
 MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension);
 
 }  // namespace rast::detail

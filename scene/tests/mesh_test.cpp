@@ -1,50 +1,15 @@
 #include "rast/mesh.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <algorithm>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <vector>
+#include <string>
+
+#include "mesh_files.h"
 
 namespace rast {
 namespace {
-
-namespace fs = std::filesystem;
-
-class MeshFiles : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("rast-mesh-" + std::to_string(::getpid()) + "-" + info->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    fs::path write(const std::string& name, const std::string& bytes) const {
-        const fs::path p = dir_ / name;
-        std::ofstream(p, std::ios::binary) << bytes;
-        return p;
-    }
-    // The what() of the ParseError that reading the file throws, with the directory taken out.
-    std::string error_of(const std::string& name, const std::string& bytes) const {
-        try {
-            read_mesh(write(name, bytes));
-        } catch (const ParseError& e) {
-            std::string what = e.what();
-            const std::string prefix = (dir_ / "").string();
-            if (what.rfind(prefix, 0) == 0) what.erase(0, prefix.size());
-            return what;
-        }
-        return "";
-    }
-    fs::path dir_;
-};
 
 // A unit cube: 8 corners, 6 quads wound counter-clockwise seen from outside.
 const char* const kCubeObj =

@@ -25,7 +25,9 @@ struct Mesh {
 // coordinates as float32, so they are exactly floats widened to double; give exact doubles as .tri.
 // Throws ParseError: unreadable file, unknown extension, no faces, a non-finite coordinate, and, in the
 // text formats, a malformed number, a face index out of range or repeated within a face, with the line;
-// for OBJ, OFF and ASCII PLY also any face OpenMesh did not keep. STL has no vertex indices: OpenMesh
+// for PLY, ASCII or binary, a header OpenMesh would misread (with the line) and, in binary data, a face
+// index out of range or repeated, or data that ends early or goes on; for OBJ, OFF and PLY also any face
+// OpenMesh did not keep. STL has no vertex indices: OpenMesh
 // merges corners at equal positions and drops a triangle with two equal corners (it has zero area and
 // covers nothing). OpenMesh's own log output is silenced; when it fails, what it said is in the error.
 Mesh read_mesh(const std::filesystem::path& path);
