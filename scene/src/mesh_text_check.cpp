@@ -49,7 +49,10 @@ MeshFileCheck check_off(TokenLines& in) {
     const std::string keyword = in[0];
     if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
         in.fail("expected an OFF header, got " + quote_token(keyword));
-    if (std::find(in.tokens().begin(), in.tokens().end(), "BINARY") != in.tokens().end()) return {};
+    // OpenMesh's binary OFF reader trusts its counts: negative ones throw std::bad_alloc, and a small
+    // well-formed file came back without faces.
+    if (std::find(in.tokens().begin(), in.tokens().end(), "BINARY") != in.tokens().end())
+        in.fail("binary OFF is not supported (OpenMesh misreads it); write it as ASCII OFF or as PLY");
     MeshFileCheck result{0, keyword + "\n"};
     std::string& text = *result.off_for_openmesh;
     std::size_t first = 1;

@@ -22,7 +22,7 @@ struct MeshFileCheck {
 // file and line for a malformed or non-finite number, a wrong count of values, a face index out of range or
 // repeated within a face, or a file that ends early. For PLY, ASCII or binary, see ply_check.h. For binary
 // STL: a non-finite coordinate (OpenMesh merges STL corners by position, and NaN would merge with
-// anything). Binary OFF is left to OpenMesh and the finite check after it.
+// anything). Binary OFF is refused.
 MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension);
 
 }  // namespace rast::detail

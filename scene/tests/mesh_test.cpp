@@ -176,6 +176,8 @@ TEST_F(MeshFiles, RejectsMalformedOffWithLine) {
     EXPECT_EQ(error_of("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n"),
               "a.off:6: the face lists 4 vertices but gives 3 values");
     EXPECT_EQ(error_of("a.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "a.off:6: the file ends before face 1 of 2");
+    EXPECT_EQ(error_of("a.off", "# binary\nOFF BINARY\n" + std::string("\xff\xff\xff\xfb\0\0\0\0", 8)),
+              "a.off:2: binary OFF is not supported (OpenMesh misreads it); write it as ASCII OFF or as PLY");
 }
 
 TEST_F(MeshFiles, RejectsMalformedPlyWithLine) {

@@ -21,7 +21,7 @@ struct Mesh {
     bool closed = false;                              // no boundary edge: every edge has a face on each side
 };
 
-// Reads OBJ, OFF, PLY or STL (ASCII or binary), chosen by the extension (any case). OpenMesh reads
+// Reads OBJ, OFF (ASCII), PLY or STL (ASCII or binary), chosen by the extension (any case). OpenMesh reads
 // coordinates as float32, so they are exactly floats widened to double; give exact doubles as .tri.
 // Throws ParseError: unreadable file, unknown extension, no faces, a non-finite coordinate, and, in the
 // text formats, a malformed number, a face index out of range or repeated within a face, with the line;
