@@ -153,6 +153,8 @@ void CoverageLoop(const Block& b, Evaluator& ev, std::uint64_t* covered) {
     }
 }
 
+// A sample row meets the triangle in one run of samples: along the row each edge's value is monotone
+// (exact, or correctly rounded operations on a monotone px), so its inside is a half-line.
 template <class Evaluator>
 bool DepthLoop(const Block& b, Evaluator& ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
@@ -171,10 +173,15 @@ bool DepthLoop(const Block& b, Evaluator& ev, const DepthPlane& p, DepthRows row
         double* err = rows.err + r * rows.stride;
         std::int64_t* ids = rows.ids + r * rows.stride;
         std::uint64_t open_bits = 0;
+        bool seen = false;
         auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
         for (int k = 0; k < b.width; k += lanes, px = hn::Add(px, advance)) {
             const auto mask = hn::And(ev.chunk(k, px), hn::FirstN(d, static_cast<std::size_t>(b.width - k)));
-            if (hn::AllFalse(d, mask)) continue;
+            if (hn::AllFalse(d, mask)) {
+                if (seen) break;  // past the row's one run of covered samples
+                continue;
+            }
+            seen = true;
             const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
             const auto stored = hn::LoadU(d, z + k), stored_err = hn::LoadU(d, err + k);
             const auto stored_id = hn::LoadU(di, ids + k);
