@@ -28,10 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct CheckOptions {
-    std::string scene_path;
     EngineChoice engine;
-    MeshView view;
-    std::optional<int> samples;
+    SceneInput input;
     std::string corpus_out = "corpus/found";
     std::size_t show = 20;
 };
@@ -131,7 +129,7 @@ bool cut_by_near_plane(const Scene& scene) {
 }
 
 std::string command_line(const CheckOptions& o) {
-    std::string text = "rast check " + o.scene_path + " --engine " + o.engine.engine;
+    std::string text = "rast check " + o.input.path + " --engine " + o.engine.engine;
     if (!o.engine.is_reference()) text += " --precision " + o.engine.precision;
     return text;
 }
@@ -150,23 +148,22 @@ fs::path keep_case(const CheckOptions& o, const Scene& scene, const Violation& f
         {"found-by", "rast check"},
         {"reproduce", command_line(o)}};
     const fs::path file =
-        fs::path(o.corpus_out) / ("check-" + fs::path(o.scene_path).stem().string() + "-" + engine + ".tri");
+        fs::path(o.corpus_out) / ("check-" + fs::path(o.input.path).stem().string() + "-" + engine + ".tri");
     fs::create_directories(file.parent_path());
     write_tri_file(file, kept, header);
     return file;
 }
 
 bool run_check(const CheckOptions& o) {
-    const bool mesh = is_mesh_path(o.scene_path);
-    Scene scene = load_scene(o.scene_path, o.view);
-    if (o.samples) scene.samples = *o.samples;
-    std::cout << "scene:  " << o.scene_path << ": " << scene.triangles.size() << " triangles, "
+    const bool mesh = o.input.is_mesh();
+    const Scene scene = o.input.load();
+    std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, "
               << scene.viewport.width << "x" << scene.viewport.height << ", " << scene.samples
               << " sample(s) per pixel\nengine: " << o.engine.describe() << '\n';
 
     std::vector<Violation> violations;
     if (mesh) {
-        if (!read_mesh(o.scene_path).closed) {
+        if (!read_mesh(o.input.path).closed) {
             std::cout << "rule:   none: the mesh has boundary edges, so coverage need not balance\n";
             return true;
         }
@@ -200,14 +197,11 @@ void add_check_command(CLI::App& app, int& status) {
         "STL; OpenMesh tells) must be covered as often by front- as by back-facing triangles everywhere; a .tri\n"
         "scene must not cover a sample twice by triangles sharing an edge. Violations are printed, written as a\n"
         "corpus case, and make the exit status 1.");
-    cmd->add_option("SCENE", o->scene_path, "A .tri scene or a mesh file")->required()->check(CLI::ExistingFile);
+    add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
-    cmd->add_option("--samples", o->samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
-        ->check(CLI::IsMember({1, 4, 8, 16}));
     cmd->add_option("--corpus-out", o->corpus_out, "Folder for the corpus case a violation is written to")
         ->capture_default_str();
     cmd->add_option("--show", o->show, "How many violating samples to print")->capture_default_str();
-    add_mesh_view_options(*cmd, o->view);
     cmd->callback([o, &status] {
         if (!run_check(*o)) status = 1;
     });

@@ -16,10 +16,8 @@ namespace rast::cli {
 namespace {
 
 struct DiffOptions {
-    std::string scene_path;
+    SceneInput input;
     EngineChoice engine{.engine = "fast"};
-    MeshView view;
-    std::optional<int> samples;
     std::string image_out;
 };
 
@@ -46,8 +44,7 @@ Image disagreement(const Framebuffer& a, const Framebuffer& b, const Image& refe
 
 
 void run_diff(const DiffOptions& o) {
-    Scene scene = load_scene(o.scene_path, o.view);
-    if (o.samples) scene.samples = *o.samples;
+    const Scene scene = o.input.load();
     const Framebuffer exact = render(scene, EngineChoice{.engine = "reference"});
     const Framebuffer fast = render(scene, o.engine);
 
@@ -60,7 +57,7 @@ void run_diff(const DiffOptions& o) {
             samples += differing;
             pixels += differing > 0;
         }
-    std::cout << "scene:  " << o.scene_path << ": " << scene.triangles.size() << " triangles, " << vp.width << "x"
+    std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, " << vp.width << "x"
               << vp.height << ", " << scene.samples << " sample(s) per pixel\n"
               << "compare: reference (exact) vs " << o.engine.describe() << '\n'
               << "differing samples: " << samples << " of " << exact.ids.size() << '\n'
@@ -83,13 +80,10 @@ void add_diff_command(CLI::App& app) {
         "their id buffers disagree, and optionally draw both side by side with a third panel marking the\n"
         "disagreeing pixels in magenta (small viewports magnified). A difference is information about a\n"
         "precision mode, not an error: the exit status is 0 whatever the count.");
-    cmd->add_option("SCENE", o->scene_path, "A .tri scene or a mesh file")->required()->check(CLI::ExistingFile);
+    add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
     cmd->remove_option(cmd->get_option("--engine"));  // one side is always the reference, the other the fast path
-    cmd->add_option("--samples", o->samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
-        ->check(CLI::IsMember({1, 4, 8, 16}));
     cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG");
-    add_mesh_view_options(*cmd, o->view);
     cmd->callback([o] { run_diff(*o); });
 }
 

@@ -23,11 +23,9 @@ namespace rast::cli {
 namespace {
 
 struct RenderOptions {
-    std::string scene_path;
+    SceneInput input;
     bool use_default = false;
     EngineChoice engine;
-    MeshView view;
-    std::optional<int> samples;
     std::string image_out;
     int magnify = 1;
     std::string coverage = "samples";
@@ -67,9 +65,8 @@ std::string format_area(Viewport vp, const std::vector<reference::Rational>& are
 }
 
 void run_render(const RenderOptions& o) {
-    Scene scene = o.use_default ? default_scene() : load_scene(o.scene_path, o.view);
-    if (o.samples) scene.samples = *o.samples;
-    const std::string name = o.use_default ? "default scene" : o.scene_path;
+    const Scene scene = o.use_default ? o.input.with_samples(default_scene()) : o.input.load();
+    const std::string name = o.use_default ? "default scene" : o.input.path;
 
     reference::Stats stats;
     const auto start = std::chrono::steady_clock::now();
@@ -117,12 +114,10 @@ void add_render_command(CLI::App& app) {
     auto o = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand(
         "render", "Rasterize a scene (.tri, or a mesh: OBJ, OFF, PLY, STL) and write a picture and buffers");
-    auto* scene = cmd->add_option("SCENE", o->scene_path, "A .tri scene or a mesh file")->check(CLI::ExistingFile);
+    auto* scene = add_scene_options(*cmd, o->input);
     auto* def = cmd->add_flag("--default", o->use_default, "Render the built-in default scene instead");
     scene->excludes(def);
     add_engine_options(*cmd, o->engine);
-    cmd->add_option("--samples", o->samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
-        ->check(CLI::IsMember({1, 4, 8, 16}));
     cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour");
     cmd->add_option("--magnify", o->magnify, "Magnify the picture N times, nearest neighbour, so pixels stay sharp")
         ->check(CLI::Range(1, 64))
@@ -137,7 +132,6 @@ void add_render_command(CLI::App& app) {
                     "Write the depth buffer: H lines of W depths at pixel centres (inf where empty)");
     cmd->add_option("--coverage-out", o->coverage_out,
                     "Write the exact covered area of every pixel: H lines of W rationals p/q, depth ignored");
-    add_mesh_view_options(*cmd, o->view);
     cmd->callback([o, scene, def] {
         if (scene->count() == 0 && def->count() == 0) throw CLI::RequiredError("SCENE or --default");
         run_render(*o);

@@ -24,8 +24,6 @@ void add_vector_option(CLI::App& command, const std::string& name, std::optional
         ->check(CLI::Number);
 }
 
-}  // namespace
-
 void add_mesh_view_options(CLI::App& command, MeshView& view) {
     const std::string group = "Meshes (OBJ, OFF, PLY, STL)";
     command.add_option("--width", view.width, "Viewport width in pixels, for a mesh")
@@ -51,14 +49,30 @@ void add_mesh_view_options(CLI::App& command, MeshView& view) {
     for (auto* name : {"--eye", "--target", "--up"}) command.get_option(name)->group(group);
 }
 
-bool is_mesh_path(const std::string& path) {
+}  // namespace
+
+CLI::Option* add_scene_options(CLI::App& command, SceneInput& input) {
+    CLI::Option* scene = command.add_option("SCENE", input.path, "A .tri scene or a mesh file (OBJ, OFF, PLY, STL)")
+                             ->check(CLI::ExistingFile);
+    command.add_option("--samples", input.samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
+        ->check(CLI::IsMember({1, 4, 8, 16}));
+    add_mesh_view_options(command, input.view);
+    return scene;
+}
+
+bool SceneInput::is_mesh() const {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     return ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl";
 }
 
-Scene load_scene(const std::string& path, const MeshView& view) {
-    if (!is_mesh_path(path)) return read_tri_file(path);
+Scene SceneInput::with_samples(Scene scene) const {
+    if (samples) scene.samples = *samples;
+    return scene;
+}
+
+Scene SceneInput::load() const {
+    if (!is_mesh()) return with_samples(read_tri_file(path));
     const Mesh mesh = read_mesh(path);
     const Viewport vp{view.width, view.height};
     Camera camera = frame(mesh, vp);
@@ -68,7 +82,7 @@ Scene load_scene(const std::string& path, const MeshView& view) {
     if (view.fov_y_degrees) camera.fov_y_degrees = *view.fov_y_degrees;
     if (view.near_plane) camera.near_plane = *view.near_plane;
     if (view.far_plane) camera.far_plane = *view.far_plane;
-    return project(mesh, camera, vp, 1);
+    return with_samples(project(mesh, camera, vp, 1));
 }
 
 }  // namespace rast::cli

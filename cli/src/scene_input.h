@@ -19,13 +19,21 @@ struct MeshView {
     std::optional<double> fov_y_degrees, near_plane, far_plane;
 };
 
-// Registers --width/--height and the camera options on a subcommand.
-void add_mesh_view_options(CLI::App& command, MeshView& view);
+// A scene as the user names it on the command line.
+struct SceneInput {
+    std::string path;             // a .tri scene, or a mesh file
+    MeshView view;                // for a mesh
+    std::optional<int> samples;   // overrides the scene's samples per pixel
 
-// True for the mesh file extensions (OBJ, OFF, PLY, STL), case-insensitively.
-bool is_mesh_path(const std::string& path);
+    // Reads a .tri scene, or a mesh projected into the viewport by the (framed or given) camera, and
+    // applies the samples override.
+    Scene load() const;
+    // The samples override applied to a scene from elsewhere.
+    Scene with_samples(Scene scene) const;
+    bool is_mesh() const;
+};
 
-// Reads a .tri scene, or a mesh projected into the viewport by the (framed or given) camera.
-Scene load_scene(const std::string& path, const MeshView& view);
+// Registers SCENE, --samples, --width/--height and the camera options on a subcommand; returns SCENE.
+CLI::Option* add_scene_options(CLI::App& command, SceneInput& input);
 
 }  // namespace rast::cli
