@@ -16,8 +16,9 @@
 namespace rast::cli::testing {
 
 struct Result {
-    int status;
+    int status = -1;  // the exit status, or -1 when a signal ended the process
     std::string out;  // stdout and stderr together
+    bool crashed() const { return status < 0; }
 };
 
 inline Result rast(const std::string& args) {
@@ -55,13 +56,15 @@ protected:
     }
     void TearDown() override { std::filesystem::remove_all(dir); }
 
-    // Writes `text` to dir/name (creating folders) and returns its path.
-    std::string file(const std::string& name, const std::string& text) {
+    // Writes `bytes` to dir/name (creating folders) and returns its path.
+    std::string file(const std::string& name, const std::string& bytes) {
         std::filesystem::create_directories((dir / name).parent_path());
-        std::ofstream(dir / name) << text;
-        return (dir / name).string();
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+        return out(name);
     }
     std::string read(const std::string& name) { return slurp(dir / name); }
+    // The path of dir/name, for a file the binary is to write.
+    std::string out(const std::string& name) { return (dir / name).string(); }
 };
 
 }  // namespace rast::cli::testing

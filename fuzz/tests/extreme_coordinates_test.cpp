@@ -1,6 +1,6 @@
 // Extreme coordinates end to end: written as hex-floats in a .tri file, read by the reader and rendered
 // by the rast binary with every engine. Expectations are worked out by hand from shared/DESIGN.md.
-#include "cli_run.h"
+#include "cli_harness.h"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,10 @@
 
 namespace rast::robustness {
 namespace {
+
+using cli::testing::Result;
+using cli::testing::rast;
+using CliTest = cli::testing::TempDirTest;
 
 const std::string kReference = "--engine reference";
 const std::vector<std::string> kFixed = {"--engine fast --precision fixed4", "--engine fast --precision fixed8",
@@ -30,7 +34,7 @@ class ExtremeCoordinates : public CliTest {
 protected:
     // The id buffer the binary writes for `scene` with `engine`; the run must succeed.
     std::string ids(const std::string& scene, const std::string& engine) {
-        const Outcome r = run_rast("render " + file("scene.tri", scene) + " " + engine + " --ids-out " + out("ids.txt"));
+        const Result r = rast("render " + file("scene.tri", scene) + " " + engine + " --ids-out " + out("ids.txt"));
         EXPECT_EQ(r.status, 0) << engine << "\n" << r.out;
         return read("ids.txt");
     }
@@ -113,7 +117,7 @@ TEST_F(ExtremeCoordinates, OverflowingDepthPlaneIsOrderedAndRoundedExactly) {
                               "tri 0 0 -" + m + "  4 0 " + m + "  0 4.5 -" + m + "\n"
                               "tri -8 -8 " + half + "  16 -8 " + half + "  -8 16 " + half + "\n";
     for (const std::string& engine : kAll) {
-        const Outcome r = run_rast("render " + file("ramp.tri", scene) + " " + engine + " --ids-out " +
+        const Result r = rast("render " + file("ramp.tri", scene) + " " + engine + " --ids-out " +
                                    out("ids.txt") + " --depth-out " + out("depth.txt"));
         ASSERT_EQ(r.status, 0) << engine << "\n" << r.out;
         EXPECT_EQ(read("ids.txt"), "0 0 0 1\n") << engine;

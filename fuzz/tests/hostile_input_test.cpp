@@ -1,7 +1,7 @@
 // Hostile input end to end: malformed or non-finite files in every format the binary reads, and
 // arguments out of range. Each must end in a clear message and a non-zero exit, never a crash or a
 // picture of something that was not in the file.
-#include "cli_run.h"
+#include "cli_harness.h"
 
 #include <gtest/gtest.h>
 
@@ -15,11 +15,15 @@
 namespace rast::robustness {
 namespace {
 
+using cli::testing::Result;
+using cli::testing::rast;
+using CliTest = cli::testing::TempDirTest;
+
 class HostileInput : public CliTest {
 protected:
     // Renders `path` (with `args`) and expects a failure whose message contains `where`.
     void expect_rejected(const std::string& path, const std::string& where, const std::string& args = "") {
-        const Outcome r = run_rast("render " + path + " " + args + " -o " + out("out.png"));
+        const Result r = rast("render " + path + " " + args + " -o " + out("out.png"));
         EXPECT_FALSE(r.crashed()) << path << " " << args << "\n" << r.out;
         EXPECT_GT(r.status, 0) << path << " " << args << "\n" << r.out;
         EXPECT_NE(r.out.find(where), std::string::npos) << "expected '" << where << "' in:\n" << r.out;
