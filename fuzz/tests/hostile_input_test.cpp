@@ -64,7 +64,7 @@ TEST_F(HostileInput, NonFiniteCoordinateInBinaryStl) {
     expect_rejected(path, path + ":");
 }
 
-// Binary PLY goes straight to OpenMesh; the finite check after it still rejects the infinity.
+// Binary PLY is checked before OpenMesh; the finite check after it rejects the infinity.
 TEST_F(HostileInput, NonFiniteCoordinateInBinaryPly) {
     std::string bytes =
         "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
