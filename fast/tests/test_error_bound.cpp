@@ -5,6 +5,8 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cfloat>
 #include <cmath>
 #include <random>
@@ -80,6 +82,74 @@ std::vector<Triangle> hard_cases() {
                               reach * (unit(rng) - 0.5), y + width * unit(rng) + slope * unit(rng)));
         }
     return out;
+}
+
+// Per sample and edge: each sample a float mode gets wrong has some edge within its bound there, and
+// no sample's bound exceeds the viewport's. Counts the samples it gets wrong.
+long check_at(const Triangle& t, Viewport vp, Precision p) {
+    const double viewport_bound = edge_error_bound(t, p, vp);
+    const std::vector<std::size_t> fast = covered_samples(t, vp, 1, p);
+    const std::set<std::size_t> covered(fast.begin(), fast.end());
+    long wrong = 0;
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i) {
+            const double px = i + 0.5, py = j + 0.5;
+            const std::array<double, 3> bound = edge_error_bound_at(t, p, px, py);
+            for (const double b : bound) EXPECT_LE(b, viewport_bound) << name(p) << " sample " << i << "," << j;
+            const bool ours = covered.count(static_cast<std::size_t>(j) * vp.width + i) != 0;
+            if (ours == exact_covers(t, px, py)) continue;
+            ++wrong;
+            bool near = false;
+            for (int k = 0; k < 3; ++k)
+                near = near || abs(edge(t.v[k], t.v[(k + 1) % 3], px, py)) <= bound[k];
+            EXPECT_TRUE(near) << name(p) << " sample " << i << "," << j;
+        }
+    return wrong;
+}
+
+// An edge from a pixel centre along a line of pixel centres to a vertex 2^20 pixels away, nudged a few
+// ulps off the line: the samples on it have tiny nonzero edge functions, and the bound near the edge's
+// start is far below the viewport's.
+std::vector<Triangle> nudged_lines() {
+    std::mt19937_64 rng(11);
+    std::uniform_int_distribution<int> pick(0, 1 << 20);
+    std::vector<Triangle> out;
+    for (int k = 0; k < 40; ++k) {
+        const double ax = 8 + pick(rng) % 16 + 0.5, ay = 8 + pick(rng) % 16 + 0.5;
+        const double dx = 1 + pick(rng) % 3, dy = pick(rng) % 3 - 1, m = (k % 2 ? 1 : -1) * 0x1p20;
+        double by = ay + m * dy;
+        for (int n = pick(rng) % 64; n > 0; --n) by = std::nextafter(by, k % 4 < 2 ? INFINITY : -INFINITY);
+        const double cx = pick(rng) % 32 + 0.25, cy = pick(rng) % 32 + 0.75;
+        out.push_back(k % 3 ? tri(ax + m * dx, by, ax, ay, cx, cy) : tri(ax + m * dx, by, cx, cy, ax, ay));
+    }
+    return out;
+}
+
+TEST(ErrorBoundAt, HoldsOnHardCases) {
+    const Viewport vp{32, 32};
+    long wrong32 = 0, wrong64 = 0;
+    for (const auto& cases : {hard_cases(), nudged_lines()})
+        for (const Triangle& t : cases) {
+            wrong32 += check_at(t, vp, Precision::float32);
+            wrong64 += check_at(t, vp, Precision::float64);
+        }
+    EXPECT_GT(wrong32, 0);
+    EXPECT_GT(wrong64, 0);
+}
+
+// At a vertex that is a sample, the edge evaluated from it has py - ay = px - ax = 0 exactly: only
+// underflow terms remain (float64 rounds no input). Which edge that is follows the winding: the
+// counter-clockwise order starts the edge between v[0] and v[1] at v[0], the clockwise one at v[1].
+TEST(ErrorBoundAt, SmallAtTheStartOfAnEdge) {
+    const Triangle ccw = tri(0.5, 0.5, 3.5, 0.5, 0.5, 3.5);
+    const Triangle cw = tri(0.5, 0.5, 0.5, 3.5, 3.5, 0.5);
+    EXPECT_LT(edge_error_bound_at(ccw, Precision::float64, 0.5, 0.5)[0], 1e-300);
+    EXPECT_LT(edge_error_bound_at(cw, Precision::float64, 0.5, 0.5)[2], 1e-300);
+    // The edge from (0.5, 3.5) to (0.5, 0.5) evaluated at (0.5, 0.5), 3 pixels from its start.
+    EXPECT_GT(edge_error_bound_at(cw, Precision::float64, 0.5, 0.5)[0], 0);
+    // 1e39 is beyond float; a fixed mode is exact.
+    EXPECT_EQ(edge_error_bound_at(tri(0, 0, 1e39, 0, 0, 1), Precision::float32, 1, 1)[0], INFINITY);
+    for (const double b : edge_error_bound_at(ccw, Precision::fixed8, 1, 1)) EXPECT_EQ(b, 0);
 }
 
 TEST(ErrorBound, HoldsOnHardCases) {

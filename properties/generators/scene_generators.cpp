@@ -268,8 +268,19 @@ rc::Gen<Scene> long_rows() {
         for (int k = *rc::gen::inRange(1, 4); k > 0; --k) {
             Triangle t = ordinary(vp);
             const double far = std::ldexp(1 + *arbitrary(0, 1), *rc::gen::inRange(8, 25));
-            t.v[0].x = *rc::gen::element(-far, far + vp.width);
-            t.v[0].y = *arbitrary(-far, far);
+            if (*rc::gen::arbitrary<bool>()) {
+                t.v[0].x = *rc::gen::element(-far, far + vp.width);
+                t.v[0].y = *arbitrary(-far, far);
+            } else {
+                // An edge from a pixel centre along a line of pixel centres to a far vertex, nudged a few
+                // ulps off it: samples near the line have tiny but nonzero edge functions, where an error
+                // that grows along the row shows against the small bound near the edge's start.
+                const Vertex a{*rc::gen::inRange(0, vp.width) + 0.5, *rc::gen::inRange(0, vp.height) + 0.5, *depth()};
+                const double dx = *rc::gen::inRange(1, 4), dy = *rc::gen::inRange(-1, 2);
+                const double m = std::floor(far / dx) * *rc::gen::element(-1.0, 1.0);
+                t.v[0] = {a.x + m * dx, ulps_off(a.y + m * dy, *rc::gen::inRange(-64, 65)), t.v[0].z};
+                t.v[*rc::gen::inRange(1, 3)] = a;
+            }
             triangles.push_back(t);
         }
         return Scene{vp, *sample_count(), std::move(triangles)};

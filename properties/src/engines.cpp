@@ -37,7 +37,7 @@ Engine fast_engine(fast::Precision p) {
     return {std::string(fast::name(p)), p,
             [p](const Scene& s) { return fast::render(s, {p, 1}); },
             [p](const Triangle& t, Viewport vp, int n) { return fast::covered_samples(t, vp, n, p); },
-            [p](const Triangle& t, Viewport vp) { return fast::edge_error_bound(t, p, vp); }};
+            [p](const Triangle& t, double x, double y) { return fast::edge_error_bound_at(t, p, x, y); }};
 }
 
 std::vector<Engine> all_engines() {

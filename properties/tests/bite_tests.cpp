@@ -143,6 +143,8 @@ const Bite kBites[] = {
     {"bbox_one_short_msaa_counts", Fault::bbox_one_short, Wrapper::none, Precision::fixed8, "msaa_counts"},
     {"bbox_one_short_fixed_matches_reference", Fault::bbox_one_short, Wrapper::none, Precision::fixed8,
      "fixed_matches_reference"},
+    {"float_row_accumulation_float_within_bound", Fault::float_row_accumulation, Wrapper::none, Precision::float64,
+     "float_within_bound"},
     {"bbox_one_short_float_within_bound", Fault::bbox_one_short, Wrapper::none, Precision::float64,
      "float_within_bound"},
     {"culling_left_on_winding_invariance", Fault::none, Wrapper::culling_left_on, Precision::fixed8,

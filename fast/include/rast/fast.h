@@ -31,6 +31,7 @@
 
 #include <rast/scene.h>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string_view>
@@ -68,5 +69,12 @@ Triangle snap(const Triangle& t, Precision precision);
 // including the rounding of every input to float for float32. +infinity where the evaluation can
 // overflow; 0 for the fixed modes, which are exact on the snapped triangle.
 double edge_error_bound(const Triangle& t, Precision precision, Viewport vp);
+
+// The same analysis at one sample (x, y), edge by edge: element k bounds |E_computed - E_exact| there for
+// the edge between v[k] and v[k + 1], evaluated from its start in counter-clockwise order as the
+// rasterizer does, with that sample's |p - a| and |p| in place of the viewport's extremes. Far smaller
+// than edge_error_bound() near an edge's start vertex. A sample can be classified differently from the
+// reference only if |E_exact(x, y)| <= element k for some edge k.
+std::array<double, 3> edge_error_bound_at(const Triangle& t, Precision precision, double x, double y);
 
 }  // namespace rast::fast

@@ -9,6 +9,7 @@
 #include <rast/fast.h>
 #include <rast/scene.h>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -27,8 +28,8 @@ struct Engine {
     std::optional<fast::Precision> precision;  // none for the reference
     std::function<Framebuffer(const Scene&)> render;
     std::function<std::vector<std::size_t>(const Triangle&, Viewport, int samples)> covered_samples;
-    // Float modes: fast::edge_error_bound, the slack the engine's edge functions may have.
-    std::function<double(const Triangle&, Viewport)> edge_error_bound;
+    // Float modes: fast::edge_error_bound_at, the slack each edge function of the engine may have at a sample.
+    std::function<std::array<double, 3>(const Triangle&, double x, double y)> edge_error_bound_at;
 
     // Exact engines classify every sample exactly on the geometry they rasterize (reference, fixed N).
     bool exact() const;

@@ -33,7 +33,8 @@ rc::Gen<Triangle> triangle(Viewport vp);
 rc::Gen<Scene> loose_triangles();
 
 // Wide, short viewports (64..256 pixels by 1..4) crossed by triangles with a vertex up to 2^25 pixels
-// away: long rows of samples whose edge functions are large, where float rounding accumulates.
+// away (half of them on an edge nudged a few ulps off a line of pixel centres): long rows of samples
+// whose edge functions are large, where float rounding accumulates.
 rc::Gen<Scene> long_rows();
 
 // Triangles with exactly shared vertices tiling a region, every one in a random vertex order and the
