@@ -197,6 +197,7 @@ struct TileBuffer {
     std::size_t size;
     std::vector<double> z, err;
     std::vector<std::int64_t> ids;
+    ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
     double far = std::numeric_limits<double>::infinity();
     std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
 };
@@ -249,14 +250,14 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
             } else {
                 // The plane, hence the exact depth, does not depend on the order of the corners.
                 const Corners u = snap(scene.triangles[other], scene.c.precision).v;
-                const int order = compare_depth(v, u, px, py);
+                const int order = tile.planes.compare(p.id, v, other, u, px, py);
                 const bool wins_tie = F == Fault::no_id_tiebreak || p.id < other;
                 replace = order < 0 || (order == 0 && wins_tie);
             }
         }
         if (!replace) continue;
         const bool finite = std::isfinite(z);
-        tile.z[slot] = finite ? z : exact_depth(v, px, py);
+        tile.z[slot] = finite ? z : tile.planes.depth(p.id, v, px, py);
         tile.err[slot] = finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN;
         tile.ids[slot] = p.id;
     }

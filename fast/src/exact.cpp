@@ -1,5 +1,5 @@
-// Exact arithmetic on doubles: every finite double is a dyadic rational, so cpp_rational / cpp_int hold
-// any coordinate, product and sum here without rounding.
+// Exact arithmetic on doubles: every finite double is a dyadic rational m · 2^e, so cpp_int mantissas
+// hold any coordinate, product and sum here without rounding (and without the gcds of cpp_rational).
 #include "exact.h"
 
 #include "bounded.h"
@@ -8,37 +8,117 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace rast::fast::detail {
 namespace {
 
 using boost::multiprecision::cpp_int;
-using boost::multiprecision::cpp_rational;
 
-int sign(const cpp_rational& r) { return r.sign(); }
+// A dyadic rational m · 2^e. Every double is one, and sums and products of them stay exact in integer
+// arithmetic alone: no gcd per operation, unlike cpp_rational.
+struct Dyadic {
+    cpp_int m;
+    int e = 0;
+};
 
-cpp_rational cross(const Vertex& a, const Vertex& b, const cpp_rational& px, const cpp_rational& py) {
-    const cpp_rational ax(a.x), ay(a.y);
-    return (cpp_rational(b.x) - ax) * (py - ay) - (cpp_rational(b.y) - ay) * (px - ax);
+Dyadic dyadic(double x) {
+    if (x == 0) return {};
+    int exponent = 0;
+    const double fraction = std::frexp(x, &exponent);
+    return {cpp_int(static_cast<long long>(std::ldexp(fraction, 53))), exponent - 53};
 }
 
-// The plane's depth at p as the barycentric combination of the corner depths (exact, so any form is).
-cpp_rational depth(const Corners& t, double x, double y) {
-    const cpp_rational px(x), py(y);
-    const cpp_rational area = cross(t[0], t[1], cpp_rational(t[2].x), cpp_rational(t[2].y));
-    return (cross(t[1], t[2], px, py) * t[0].z + cross(t[2], t[0], px, py) * t[1].z +
-            cross(t[0], t[1], px, py) * t[2].z) /
-           area;
+Dyadic operator*(const Dyadic& a, const Dyadic& b) { return {a.m * b.m, a.e + b.e}; }
+
+Dyadic operator-(const Dyadic& a) { return {-a.m, a.e}; }
+
+Dyadic operator+(const Dyadic& a, const Dyadic& b) {
+    if (a.m.is_zero()) return b;
+    if (b.m.is_zero()) return a;
+    const int e = std::min(a.e, b.e);
+    return {(a.m << static_cast<unsigned>(a.e - e)) + (b.m << static_cast<unsigned>(b.e - e)), e};
+}
+
+Dyadic operator-(const Dyadic& a, const Dyadic& b) { return a + -b; }
+
+// (b - a) x (c - a), exactly.
+Dyadic cross(const Vertex& a, const Vertex& b, const Vertex& c) {
+    const Dyadic ax = dyadic(a.x), ay = dyadic(a.y);
+    return (dyadic(b.x) - ax) * (dyadic(c.y) - ay) - (dyadic(b.y) - ay) * (dyadic(c.x) - ax);
+}
+
+// x a + y b + c.
+struct Linear {
+    Dyadic a, b, c;
+
+    Dyadic at(double x, double y) const { return a * dyadic(x) + b * dyadic(y) + c; }
+};
+
+Linear operator*(const Linear& l, const Dyadic& k) { return {l.a * k, l.b * k, l.c * k}; }
+
+Linear operator-(const Linear& l, const Linear& m) { return {l.a - m.a, l.b - m.b, l.c - m.c}; }
+
+// A triangle's plane, depth(p) = numerator(p) / area with area > 0: the barycentric combination of the
+// corner depths, the sum over corners k of z_k E_k(p) / area, E_k the edge function of the edge
+// opposite corner k, collected by monomial.
+struct Plane {
+    Linear numerator;
+    Dyadic area;
+};
+
+Plane plane_of(const Corners& t) {
+    Linear n;
+    for (int k = 0; k < 3; ++k) {
+        const Vertex& a = t[(k + 1) % 3];
+        const Vertex& b = t[(k + 2) % 3];
+        const Dyadic ax = dyadic(a.x), ay = dyadic(a.y), bx = dyadic(b.x), by = dyadic(b.y), z = dyadic(t[k].z);
+        // (b - a) x (p - a) = (ay - by) px + (bx - ax) py + (ax by - ay bx)
+        n.a = n.a + z * (ay - by);
+        n.b = n.b + z * (bx - ax);
+        n.c = n.c + z * (ax * by - ay * bx);
+    }
+    const Dyadic area = cross(t[0], t[1], t[2]);
+    if (area.m.sign() < 0) return {{-n.a, -n.b, -n.c}, -area};
+    return {n, area};
+}
+
+// n / d rounded to the nearest double (ties to even), d > 0, by one integer division: no gcd of the
+// thousands of bits a depth plane spans.
+double quotient(const Dyadic& n, const Dyadic& d) {
+    if (n.m.is_zero()) return 0;
+    const cpp_int magnitude = abs(n.m);
+    // q = floor(|n.m| 2^k / d.m) has 56 or 57 bits: three or more below a double's 53, for rounding.
+    const int k = 56 + static_cast<int>(msb(d.m)) - static_cast<int>(msb(magnitude));
+    cpp_int q, r;
+    divide_qr(k >= 0 ? cpp_int(magnitude << static_cast<unsigned>(k)) : cpp_int(magnitude >> static_cast<unsigned>(-k)),
+              d.m, q, r);
+    // Bits shifted out (k < 0) and the remainder are both below q's last bit: only whether any is set matters.
+    const bool sticky = !r.is_zero() || (k < 0 && lsb(magnitude) < static_cast<unsigned>(-k));
+    auto bits = static_cast<std::uint64_t>(q);
+    const int exponent = n.e - d.e - k;  // |n / d| = (q + a fraction) 2^exponent
+    double result = 0;
+    if (static_cast<int>(msb(q)) + exponent >= -1022) {
+        // Normal or overflowing: the conversion rounds once, with sticky as the last bit, and the scaling is
+        // exact, or overflows to infinity exactly where the rounded value does.
+        result = std::ldexp(static_cast<double>(bits | std::uint64_t{sticky}), exponent);
+    } else {
+        // Subnormal: round to a multiple of 2^-1074 here; the conversion and scaling are then exact.
+        const int drop = std::min(-1074 - exponent, 63);
+        const std::uint64_t half = std::uint64_t{1} << (drop - 1), rest = bits & ((half << 1) - 1);
+        bits >>= drop;
+        if (rest > half || (rest == half && (sticky || (bits & 1)))) ++bits;
+        result = std::ldexp(static_cast<double>(bits), -1074);
+    }
+    return n.m.sign() < 0 ? -result : result;
 }
 
 // x · 2^bits as an integer; x is a multiple of 2^-bits.
 cpp_int scaled(double x, int bits) {
-    int exponent = 0;
-    const double fraction = std::frexp(x, &exponent);
-    cpp_int m = static_cast<long long>(std::ldexp(fraction, 53));
-    const int shift = exponent - 53 + bits;
-    if (shift >= 0) return m << shift;
-    return m / (cpp_int(1) << -shift);  // exact: the low bits are zero on the grid
+    const Dyadic d = dyadic(x);
+    const int shift = d.e + bits;
+    if (shift >= 0) return d.m << static_cast<unsigned>(shift);
+    return d.m / (cpp_int(1) << static_cast<unsigned>(-shift));  // exact: the low bits are zero on the grid
 }
 
 // floor(a / b) for b > 0.
@@ -65,14 +145,47 @@ int orientation(const Corners& v) {
     const double det = t1 - t2;
     const double bound = (3 * kUnitDouble + 16 * kUnitDouble * kUnitDouble) * (std::abs(t1) + std::abs(t2));
     if (std::isfinite(det) && std::isfinite(bound) && std::abs(det) > bound) return det > 0 ? 1 : -1;
-    return sign(cross(v[0], v[1], cpp_rational(v[2].x), cpp_rational(v[2].y)));
+    return cross(v[0], v[1], v[2]).m.sign();
 }
 
-int compare_depth(const Corners& t, const Corners& u, double x, double y) {
-    return sign(depth(t, x, y) - depth(u, x, y));
+struct ExactPlanes::Cache {
+    // Node-based maps: a reference survives later inserts.
+    std::unordered_map<std::int64_t, Plane> planes;
+    // Per ordered pair (t, u) of ids: depth_t - depth_u times area_t area_u > 0, linear in p, so that
+    // a sample costs two small products and two sums.
+    std::unordered_map<std::uint64_t, Linear> differences;
+
+    const Plane& plane(std::int64_t id, const Corners& t) {
+        const auto [at, inserted] = planes.try_emplace(id);
+        if (inserted) at->second = plane_of(t);
+        return at->second;
+    }
+};
+
+ExactPlanes::ExactPlanes() = default;
+ExactPlanes::ExactPlanes(ExactPlanes&&) noexcept = default;
+ExactPlanes& ExactPlanes::operator=(ExactPlanes&&) noexcept = default;
+ExactPlanes::~ExactPlanes() = default;
+
+int ExactPlanes::compare(std::int64_t t_id, const Corners& t, std::int64_t u_id, const Corners& u, double x,
+                         double y) {
+    if (!cache_) cache_ = std::make_unique<Cache>();
+    // Ids are below 2^31 (render checks): the pair packs into one key.
+    const std::uint64_t key = static_cast<std::uint64_t>(t_id) << 32 | static_cast<std::uint64_t>(u_id);
+    auto found = cache_->differences.find(key);
+    if (found == cache_->differences.end()) {
+        const Plane& p = cache_->plane(t_id, t);
+        const Plane& q = cache_->plane(u_id, u);
+        found = cache_->differences.emplace(key, p.numerator * q.area - q.numerator * p.area).first;
+    }
+    return found->second.at(x, y).m.sign();
 }
 
-double exact_depth(const Corners& t, double x, double y) { return depth(t, x, y).convert_to<double>(); }
+double ExactPlanes::depth(std::int64_t id, const Corners& t, double x, double y) {
+    if (!cache_) cache_ = std::make_unique<Cache>();
+    const Plane& p = cache_->plane(id, t);
+    return quotient(p.numerator.at(x, y), p.area);
+}
 
 std::vector<Span> wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                              std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo,

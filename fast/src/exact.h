@@ -6,6 +6,8 @@
 #include <rast/scene.h>
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -16,11 +18,26 @@ using Corners = std::array<Vertex, 3>;
 // Sign (-1, 0, 1) of (v1 - v0) x (v2 - v0): 1 for counter-clockwise.
 int orientation(const Corners& v);
 
-// Sign of depth_t(x, y) - depth_u(x, y), the exact planes of two non-degenerate triangles.
-int compare_depth(const Corners& t, const Corners& u, double x, double y);
+// The exact depth planes of the triangles a z-buffer had to order exactly, each built once, at its
+// triangle's first such comparison, then evaluated per sample. Not synchronized: one per thread.
+class ExactPlanes {
+public:
+    ExactPlanes();
+    ExactPlanes(ExactPlanes&&) noexcept;
+    ExactPlanes& operator=(ExactPlanes&&) noexcept;
+    ~ExactPlanes();
 
-// The exact depth of the plane of `t` at (x, y), rounded to a double.
-double exact_depth(const Corners& t, double x, double y);
+    // Sign of depth_t(x, y) - depth_u(x, y) for the non-degenerate triangles t and u (any corner order),
+    // named by their ids.
+    int compare(std::int64_t t_id, const Corners& t, std::int64_t u_id, const Corners& u, double x, double y);
+
+    // The exact depth of the plane of triangle t at (x, y), rounded to a double.
+    double depth(std::int64_t id, const Corners& t, double x, double y);
+
+private:
+    struct Cache;
+    std::unique_ptr<Cache> cache_;  // created at the first exact comparison
+};
 
 // A run of covered pixels [lo, hi] in one sample row; empty when lo > hi.
 struct Span {

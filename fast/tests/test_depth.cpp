@@ -90,6 +90,33 @@ TEST_P(Depth, PerSampleDepth) {
     EXPECT_EQ(fb.depth[fb.index(0, 0, 2)], 0.125 - 0.5);
 }
 
+// Corner depths of +-2^1023 overflow the double plane (z1 - z0 = -2^1024), so the depth written is the
+// exact one rounded to nearest, ties to even. With corners (0, 0), (4, 0), (0, 4) the plane is
+// z0 (1 - x/4 - y/4) + z1 x/4 + z2 y/4; at (0.5, 0.5) that is 1.25 * 2^1022 + z2 / 8, and z2 / 8 = 2^969 is
+// half an ulp of 2^1022.
+TEST_P(Depth, OverflowingPlaneWritesTheExactDepthRounded) {
+    Scene scene;
+    scene.viewport = {2, 1};
+    const Triangle t = tri(0, 0, 4, 0, 0, 4);
+    scene.triangles = {with_z(t, 0x1p1023, -0x1p1023, 0x1p972)};
+    Framebuffer fb = render(scene, {GetParam(), 1});
+    EXPECT_EQ(fb.depth[fb.index(0, 0)], 0x1.4p1022);  // a tie, to the even neighbour below
+    // At (1.5, 0.5): 2^1022 - 0.75 * 2^1022 + 2^969 = 2^1020 (1 + 2^-51), exact.
+    EXPECT_EQ(fb.depth[fb.index(1, 0)], 0x1.0000000000002p1020);
+    // Just above the tie: z2 = 2^972 (1 + 2^-52) rounds up by one ulp.
+    scene.triangles = {with_z(t, 0x1p1023, -0x1p1023, 0x1.0000000000001p972)};
+    fb = render(scene, {GetParam(), 1});
+    EXPECT_EQ(fb.depth[fb.index(0, 0)], 0x1.4000000000001p1022);
+    // Both planes overflow and meet where x = y; elsewhere the exact order decides: the mirror image
+    // (z1 and z2 swapped) is nearer where y > x, and the lower id wins the tie at (0.5, 0.5).
+    scene.viewport = {2, 2};
+    scene.triangles = {with_z(t, 0x1p1023, -0x1p1023, 0x1p1023), with_z(t, 0x1p1023, 0x1p1023, -0x1p1023)};
+    fb = render(scene, {GetParam(), 1});
+    EXPECT_EQ(fb.id(0, 0), 0);
+    EXPECT_EQ(fb.id(1, 0), 0);
+    EXPECT_EQ(fb.id(0, 1), 1);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllModes, Depth, ::testing::ValuesIn(testing::kAllPrecisions),
                          [](const auto& info) { return std::string(name(info.param)); });
 
