@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -77,7 +78,8 @@ void run_render(const RenderOptions& o) {
     for (auto id : fb.ids) covered += id != Framebuffer::kNoTriangle;
     std::cout << "scene:   " << name << ": " << scene.triangles.size() << " triangles, " << scene.viewport.width
               << "x" << scene.viewport.height << ", " << scene.samples << " sample(s) per pixel\n"
-              << "engine:  " << o.engine.describe() << ", " << ms << " ms\n"
+              << "engine:  " << o.engine.describe() << ", " << std::fixed << std::setprecision(2) << ms
+              << " ms\n" << std::defaultfloat
               << "covered: " << covered << " of " << fb.ids.size() << " samples\n";
     if (o.engine.is_reference()) {
         // How often the floating-point filters could not decide and exact arithmetic ran.
