@@ -71,7 +71,9 @@ Rational twice_area(const Triangle& t) {
 }
 
 double snap(double value, int bits) {
-    // Scaling by a power of two is exact, and nearbyint rounds ties to even in the default mode.
+    // A double of magnitude 2^(52 - bits) or more is already a multiple of 2^-bits, and scaling it could
+    // overflow. Below that, scaling by a power of two is exact and nearbyint rounds ties to even.
+    if (!(std::abs(value) < std::ldexp(1.0, 52 - bits))) return value;
     return std::ldexp(std::nearbyint(std::ldexp(value, bits)), -bits);
 }
 

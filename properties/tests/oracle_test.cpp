@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -76,6 +77,9 @@ TEST(ExactGeometry, AreaAndSnapping) {
     EXPECT_EQ(snap(-3.0 / 32, 4), -0.125);  // symmetric about zero
     EXPECT_EQ(snap(0.3, 1), 0.5);
     EXPECT_EQ(snap(0x1p60 + 0x1p8, 16), 0x1p60 + 0x1p8);
+    // Already on every grid, and far too large to scale by 2^bits without overflowing.
+    EXPECT_EQ(snap(std::numeric_limits<double>::max(), 16), std::numeric_limits<double>::max());
+    EXPECT_EQ(snap(-0x1.fd16781507b56p+1020, 16), -0x1.fd16781507b56p+1020);
 }
 
 // The square [0, 4]^2 cut along its diagonal: every pixel centre is inside exactly one half.
