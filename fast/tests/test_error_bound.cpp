@@ -42,9 +42,10 @@ double min_edge_distance(const Triangle& t, double px, double py) {
     return least;
 }
 
-// Counts the samples a float mode gets wrong, and checks each against the bound.
-long check(const Triangle& t, Viewport vp, Precision p) {
-    const double bound = edge_error_bound(t, p, vp);
+// Calls visit(i, j, px, py, wrong) for every pixel centre of the viewport, `wrong` when the float mode
+// classifies it unlike the exact rule; returns how many it got wrong.
+template <class Visit>
+long for_each_sample(const Triangle& t, Viewport vp, Precision p, Visit visit) {
     const std::vector<std::size_t> fast = covered_samples(t, vp, 1, p);
     const std::set<std::size_t> covered(fast.begin(), fast.end());
     long wrong = 0;
@@ -52,11 +53,20 @@ long check(const Triangle& t, Viewport vp, Precision p) {
         for (int i = 0; i < vp.width; ++i) {
             const double px = i + 0.5, py = j + 0.5;
             const bool ours = covered.count(static_cast<std::size_t>(j) * vp.width + i) != 0;
-            if (ours == exact_covers(t, px, py)) continue;
-            ++wrong;
-            EXPECT_LE(min_edge_distance(t, px, py), bound) << name(p) << " sample " << i << "," << j;
+            const bool differs = ours != exact_covers(t, px, py);
+            wrong += differs;
+            visit(i, j, px, py, differs);
         }
     return wrong;
+}
+
+// Counts the samples a float mode gets wrong, and checks each against the bound.
+long check(const Triangle& t, Viewport vp, Precision p) {
+    const double bound = edge_error_bound(t, p, vp);
+    return for_each_sample(t, vp, p, [&](int i, int j, double px, double py, bool wrong) {
+        if (!wrong) return;
+        EXPECT_LE(min_edge_distance(t, px, py), bound) << name(p) << " sample " << i << "," << j;
+    });
 }
 
 // Thin needles crossing the viewport with their vertices far away (large edge functions, cancellation
@@ -88,23 +98,14 @@ std::vector<Triangle> hard_cases() {
 // no sample's bound exceeds the viewport's. Counts the samples it gets wrong.
 long check_at(const Triangle& t, Viewport vp, Precision p) {
     const double viewport_bound = edge_error_bound(t, p, vp);
-    const std::vector<std::size_t> fast = covered_samples(t, vp, 1, p);
-    const std::set<std::size_t> covered(fast.begin(), fast.end());
-    long wrong = 0;
-    for (int j = 0; j < vp.height; ++j)
-        for (int i = 0; i < vp.width; ++i) {
-            const double px = i + 0.5, py = j + 0.5;
-            const std::array<double, 3> bound = edge_error_bound_at(t, p, px, py);
-            for (const double b : bound) EXPECT_LE(b, viewport_bound) << name(p) << " sample " << i << "," << j;
-            const bool ours = covered.count(static_cast<std::size_t>(j) * vp.width + i) != 0;
-            if (ours == exact_covers(t, px, py)) continue;
-            ++wrong;
-            bool near = false;
-            for (int k = 0; k < 3; ++k)
-                near = near || abs(edge(t.v[k], t.v[(k + 1) % 3], px, py)) <= bound[k];
-            EXPECT_TRUE(near) << name(p) << " sample " << i << "," << j;
-        }
-    return wrong;
+    return for_each_sample(t, vp, p, [&](int i, int j, double px, double py, bool wrong) {
+        const std::array<double, 3> bound = edge_error_bound_at(t, p, px, py);
+        for (const double b : bound) EXPECT_LE(b, viewport_bound) << name(p) << " sample " << i << "," << j;
+        if (!wrong) return;
+        bool near = false;
+        for (int k = 0; k < 3; ++k) near = near || abs(edge(t.v[k], t.v[(k + 1) % 3], px, py)) <= bound[k];
+        EXPECT_TRUE(near) << name(p) << " sample " << i << "," << j;
+    });
 }
 
 // An edge from a pixel centre along a line of pixel centres to a vertex 2^20 pixels away, nudged a few
