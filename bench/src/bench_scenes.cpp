@@ -39,6 +39,13 @@ Point polar(Point c, double radius, double angle) {
 
 Triangle triangle(Point a, Point b, Point c) { return Triangle{{Vertex{a.x, a.y, 0}, Vertex{b.x, b.y, 0}, Vertex{c.x, c.y, 0}}}; }
 
+// A triangle with one side `length` long from a along `angle`, its apex `width` off that side's middle.
+Triangle thin(Point a, double angle, double length, double width) {
+    const Point b = polar(a, length, angle);
+    const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
+    return triangle(a, b, polar(mid, width, angle + kPi / 2));
+}
+
 Point anywhere(Random& r, Viewport vp) { return {r.uniform(0, vp.width), r.uniform(0, vp.height)}; }
 
 // Three vertices on a circle of the given diameter, about 120 degrees apart (fat triangles of similar
@@ -61,9 +68,8 @@ void needles(const SceneSpec& spec, Random& r, std::vector<Triangle>& out) {
     for (std::size_t k = 0; k < spec.triangles; ++k) {
         const Point a = anywhere(r, spec.viewport);
         const double angle = r.uniform(0, 2 * kPi);
-        const Point b = polar(a, r.uniform(64, 512), angle);
-        const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
-        out.push_back(triangle(a, b, polar(mid, r.uniform(0.125, 1), angle + kPi / 2)));
+        const double length = r.uniform(64, 512);
+        out.push_back(thin(a, angle, length, r.uniform(0.125, 1)));
     }
 }
 
@@ -156,10 +162,9 @@ void slivers(const SceneSpec& spec, Random& r, std::vector<Triangle>& out) {
     for (std::size_t k = 0; k < spec.triangles; ++k) {
         const Point a = anywhere(r, spec.viewport);
         const double angle = r.uniform(0, 2 * kPi);
-        const Point b = polar(a, r.uniform(16, 256), angle);
-        const Point mid{(a.x + b.x) / 2, (a.y + b.y) / 2};
-        out.push_back(triangle(a, b, polar(mid, std::ldexp(1 + r.unit(), -static_cast<int>(r.between(10, 50))),
-                                           angle + kPi / 2)));
+        const double length = r.uniform(16, 256);
+        const double width = std::ldexp(1 + r.unit(), -static_cast<int>(r.between(10, 50)));
+        out.push_back(thin(a, angle, length, width));
     }
 }
 
