@@ -162,10 +162,13 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
 }
 
 // One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
-// kRowLanes of padding lets the last row's vector loads run past its end. Reused from tile to tile.
+// kRowLanes of padding lets the last row's vector loads run past its end. Sized to the viewport's
+// largest tile (a small viewport's is small) and reused from tile to tile.
 struct TileBuffer {
-    explicit TileBuffer(int samples)
-        : size(static_cast<std::size_t>(samples) * kTile * kTile),
+    TileBuffer(int samples, Viewport vp)
+        : cols(std::min(kTile, vp.width)),
+          rows(std::min(kTile, vp.height)),
+          size(static_cast<std::size_t>(samples) * rows * cols),
           z(size + kRowLanes, std::numeric_limits<double>::infinity()),
           err(size + kRowLanes, 0.0),
           ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
@@ -192,8 +195,9 @@ struct TileBuffer {
         far = largest;
     }
     std::size_t at(int s, int row, int col) const {
-        return (static_cast<std::size_t>(s) * kTile + row) * kTile + col;
+        return (static_cast<std::size_t>(s) * rows + row) * cols + col;
     }
+    int cols, rows;  // the row stride and rows per sample plane
     std::size_t size;
     std::vector<double> z, err;
     std::vector<std::int64_t> ids;
@@ -283,12 +287,12 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
         const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
         const Coverage cov = cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
         const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
-        const DepthRows rows{tile.z.data() + at, tile.err.data() + at, tile.ids.data() + at, kTile};
+        const DepthRows rows{tile.z.data() + at, tile.err.data() + at, tile.ids.data() + at, tile.cols};
         const bool open = b.width * b.rows <= kScalarSamples ? depth_block_scalar(b, cov, plane, rows, undecided)
                                                              : depth_block(b, cov, plane, rows, undecided);
         if (!open) continue;
         for (int r = 0; r < b.rows; ++r)
-            if (undecided[r] != 0) resolve<F>(t.p.v, plane, b, r, undecided[r], tile, at + r * kTile, scene);
+            if (undecided[r] != 0) resolve<F>(t.p.v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
     }
 }
 
@@ -394,7 +398,7 @@ Framebuffer render_scene(const Scene& scene, const Options& options) {
     const std::size_t workers = static_cast<std::size_t>(arena.max_concurrency());
     const std::size_t chunk_count = workers == 1 ? 1 : std::clamp<std::size_t>(n / kChunkTriangles, 1, 4 * workers);
     std::vector<Chunk> chunks(chunk_count);
-    tbb::enumerable_thread_specific<TileBuffer> buffers(scene.samples);
+    tbb::enumerable_thread_specific<TileBuffer> buffers(scene.samples, c.vp);
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count, 1), [&](const auto& r) {
             for (std::size_t k = r.begin(); k != r.end(); ++k)
