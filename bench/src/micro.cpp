@@ -48,15 +48,17 @@ void set_rates(benchmark::State& state, const SceneSpec& spec) {
 void fast_path(benchmark::State& state, SceneSpec spec, fast::Precision precision, int threads) {
     const Scene& scene = scene_for(spec);
     const fast::Options options{precision, threads};
+    Framebuffer fb;
     try {
-        fast::render(scene, options);  // warm-up, and a clear skip for a scene the engine rejects
+        fast::render(scene, fb, options);  // warm-up, and a clear skip for a scene the engine rejects
         set_rates(state, spec);
     } catch (const std::exception& e) {
         state.SkipWithError(e.what());
         return;
     }
+    // Into the kept framebuffer, as llvmpipe draws into its context's.
     for (auto _ : state) {
-        const Framebuffer fb = fast::render(scene, options);
+        fast::render(scene, fb, options);
         benchmark::DoNotOptimize(fb.ids.data());
     }
 }

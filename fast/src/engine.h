@@ -374,8 +374,19 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         }
 }
 
+// Storage for the scene's samples, kept when fb already has the size: every sample is written anyway
+// (render_tile copies whole tiles).
+inline void fit(Framebuffer& fb, Viewport vp, int samples) {
+    const std::size_t size = static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height) *
+                             static_cast<std::size_t>(samples);
+    fb.viewport = vp;
+    fb.samples = samples;
+    fb.ids.resize(size);
+    fb.depth.resize(size);
+}
+
 template <Fault F>
-Framebuffer render_scene(const Scene& scene, const Options& options) {
+void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     validate(scene.viewport, scene.samples);
     for (std::size_t id = 0; id < scene.triangles.size(); ++id) validate(scene.triangles[id], id);
     if (options.threads < 0)
@@ -388,7 +399,7 @@ Framebuffer render_scene(const Scene& scene, const Options& options) {
     const SceneView view{scene.triangles, c};
     const int tiles_x = (c.vp.width + kTile - 1) / kTile, tiles_y = (c.vp.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
-    Framebuffer fb(c.vp, scene.samples);
+    fit(fb, c.vp, scene.samples);
 
     tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
@@ -413,7 +424,6 @@ Framebuffer render_scene(const Scene& scene, const Options& options) {
             }
         });
     });
-    return fb;
 }
 
 template <Fault F>

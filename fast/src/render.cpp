@@ -6,7 +6,13 @@
 namespace rast::fast {
 
 Framebuffer render(const Scene& scene, const Options& options) {
-    return detail::render_scene<Fault::none>(scene, options);
+    Framebuffer fb;
+    detail::render_scene<Fault::none>(scene, options, fb);
+    return fb;
+}
+
+void render(const Scene& scene, Framebuffer& target, const Options& options) {
+    detail::render_scene<Fault::none>(scene, options, target);
 }
 
 std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int samples, Precision precision) {

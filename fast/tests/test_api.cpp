@@ -1,11 +1,13 @@
-// Precision names and input validation.
+// Precision names, input validation and rendering into a kept framebuffer.
 #include <rast/fast.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace rast::fast {
 namespace {
@@ -40,6 +42,57 @@ TEST(Api, RejectsBadInput) {
     scene.triangles[0].v[2].y = 1;
     EXPECT_THROW(render(scene, {Precision::fixed8, -1}), std::invalid_argument);
     EXPECT_NO_THROW(render(scene, {Precision::fixed8, 0}));
+}
+
+// One triangle owns pixel (0, 0) alone: the centres (1.5, 0.5) and (0.5, 1.5) lie on its hypotenuse, a
+// right edge (it rises along the counter-clockwise boundary), which does not own them.
+Scene corner_scene(Viewport vp) {
+    Scene scene;
+    scene.viewport = vp;
+    scene.triangles.push_back({{{{0, 0, 0.5}, {2, 0, 0.5}, {0, 2, 0.5}}}});
+    return scene;
+}
+
+void expect_corner_only(const Framebuffer& fb, Viewport vp) {
+    ASSERT_EQ(fb.viewport.width, vp.width);
+    ASSERT_EQ(fb.viewport.height, vp.height);
+    ASSERT_EQ(fb.ids.size(), static_cast<std::size_t>(vp.width * vp.height));
+    ASSERT_EQ(fb.depth.size(), fb.ids.size());
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i) {
+            const bool corner = i == 0 && j == 0;
+            EXPECT_EQ(fb.id(i, j), corner ? 0 : Framebuffer::kNoTriangle) << i << ", " << j;
+            EXPECT_EQ(fb.depth[fb.index(i, j)], corner ? 0.5 : std::numeric_limits<double>::infinity()) << i << ", " << j;
+        }
+}
+
+TEST(Api, RendersIntoAKeptFramebufferOverwritingEverySample) {
+    const Viewport vp{4, 2};
+    Framebuffer target(vp, 1);
+    std::fill(target.ids.begin(), target.ids.end(), 7);
+    std::fill(target.depth.begin(), target.depth.end(), -5.0);
+    const std::int32_t* storage = target.ids.data();
+    render(corner_scene(vp), target, {Precision::fixed8, 2});
+    expect_corner_only(target, vp);
+    EXPECT_EQ(target.ids.data(), storage) << "the storage of the right size was not kept";
+}
+
+TEST(Api, RendersIntoAFramebufferOfAnotherSize) {
+    Framebuffer target(Viewport{64, 64}, 4);
+    const Viewport vp{3, 3};
+    render(corner_scene(vp), target);
+    EXPECT_EQ(target.samples, 1);
+    expect_corner_only(target, vp);
+}
+
+TEST(Api, InvalidInputLeavesTheTargetUntouched) {
+    Scene scene = corner_scene({4, 2});
+    scene.triangles[0].v[1].x = std::numeric_limits<double>::quiet_NaN();
+    Framebuffer target(Viewport{5, 5}, 1);
+    std::fill(target.ids.begin(), target.ids.end(), 3);
+    EXPECT_THROW(render(scene, target), std::invalid_argument);
+    EXPECT_EQ(target.viewport.width, 5);
+    EXPECT_EQ(target.ids, std::vector<std::int32_t>(25, 3));
 }
 
 }  // namespace

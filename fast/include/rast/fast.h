@@ -53,6 +53,12 @@ std::optional<Precision> parse_precision(std::string_view s);
 // Rasterizes the scene with the z-buffer's (z, id) order.
 Framebuffer render(const Scene& scene, const Options& options = {});
 
+// The same, into `target`: every sample of it is overwritten, and its storage is kept when its viewport
+// and sample count already match the scene's (resized otherwise). For frame after frame, as a GL context
+// keeps its framebuffer; render(scene, options) allocates and fills a new one each call. Invalid input
+// throws before target is touched.
+void render(const Scene& scene, Framebuffer& target, const Options& options = {});
+
 // The framebuffer indices (Framebuffer::index) of every sample that `t` covers, ascending; no depth test.
 std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int samples,
                                          Precision precision = Precision::fixed8);

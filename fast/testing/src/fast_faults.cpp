@@ -23,7 +23,9 @@ auto with_fault(Fault fault, Args&&... args) {
 template <Fault F>
 struct Render {
     static Framebuffer run(const Scene& scene, const Options& options) {
-        return detail::render_scene<F>(scene, options);
+        Framebuffer fb;
+        detail::render_scene<F>(scene, options, fb);
+        return fb;
     }
 };
 
