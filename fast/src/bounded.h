@@ -1,9 +1,12 @@
-// Running error analysis: a floating-point value carried with a rigorous bound on its distance from
-// the exact value it approximates. Each operation adds its own rounding (u·|result| for round to
-// nearest with unit roundoff u) to the propagated input errors. The bound arithmetic itself rounds,
-// and second-order terms are dropped; callers absorb both with kSlack on the final bound.
+// Running error analysis in double: a value carried with a rigorous bound on its distance from the exact
+// value it approximates. Each operation adds its own rounding to the propagated input errors: u·|result|
+// (round to nearest, u = 2^-53), and for a product or quotient also 2^-1074, the absolute error of a
+// result that underflows into the subnormal range, where u·|result| no longer bounds it. (A sum or
+// difference of doubles that is subnormal is exact.) The bound arithmetic itself rounds, and second-order
+// terms are dropped; callers absorb both with kSlack on the final bound.
 #pragma once
 
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -22,26 +25,27 @@ inline constexpr double kSlack = 1 + 0x1p-20;
 
 inline Bounded exact(double v) { return {v, 0}; }
 
-inline Bounded add(Bounded x, Bounded y, double u) {
+inline Bounded add(Bounded x, Bounded y) {
     const double v = x.v + y.v;
-    return {v, x.e + y.e + u * std::abs(v)};
+    return {v, x.e + y.e + kUnitDouble * std::abs(v)};
 }
 
-inline Bounded sub(Bounded x, Bounded y, double u) {
+inline Bounded sub(Bounded x, Bounded y) {
     const double v = x.v - y.v;
-    return {v, x.e + y.e + u * std::abs(v)};
+    return {v, x.e + y.e + kUnitDouble * std::abs(v)};
 }
 
-inline Bounded mul(Bounded x, Bounded y, double u) {
+inline Bounded mul(Bounded x, Bounded y) {
     const double v = x.v * y.v;
-    return {v, std::abs(x.v) * y.e + std::abs(y.v) * x.e + x.e * y.e + u * std::abs(v)};
+    return {v, std::abs(x.v) * y.e + std::abs(y.v) * x.e + x.e * y.e + kUnitDouble * std::abs(v) + DBL_TRUE_MIN};
 }
 
 // |X/Y - x/y| <= (ex + |x/y| ey) / (|y| - ey) when |Y - y| <= ey < |y|; unbounded otherwise.
-inline Bounded div(Bounded x, Bounded y, double u) {
+inline Bounded div(Bounded x, Bounded y) {
     const double v = x.v / y.v;
     if (!(std::abs(y.v) > y.e)) return {v, std::numeric_limits<double>::infinity()};
-    return {v, (x.e + std::abs(v) * (1 + u) * y.e) / (std::abs(y.v) - y.e) + u * std::abs(v)};
+    return {v, (x.e + std::abs(v) * (1 + kUnitDouble) * y.e) / (std::abs(y.v) - y.e) + kUnitDouble * std::abs(v) +
+                   DBL_TRUE_MIN};
 }
 
 }  // namespace rast::fast::detail

@@ -126,19 +126,19 @@ bool pixel_range(double lo, double hi, double o_min, double o_max, int size, int
 
 inline Plane make_plane(const Placed& s, const Context& c) {
     const Corners& v = s.v;
-    const double u = kUnitDouble;
-    const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x), u), dy1 = sub(exact(v[1].y), exact(v[0].y), u);
-    const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x), u), dy2 = sub(exact(v[2].y), exact(v[0].y), u);
-    const Bounded dz1 = sub(exact(v[1].z), exact(v[0].z), u), dz2 = sub(exact(v[2].z), exact(v[0].z), u);
-    const Bounded det = sub(mul(dx1, dy2, u), mul(dx2, dy1, u), u);
-    const Bounded a = div(sub(mul(dz1, dy2, u), mul(dz2, dy1, u), u), det, u);
-    const Bounded b = div(sub(mul(dx1, dz2, u), mul(dx2, dz1, u), u), det, u);
+    const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x)), dy1 = sub(exact(v[1].y), exact(v[0].y));
+    const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x)), dy2 = sub(exact(v[2].y), exact(v[0].y));
+    const Bounded dz1 = sub(exact(v[1].z), exact(v[0].z)), dz2 = sub(exact(v[2].z), exact(v[0].z));
+    const Bounded det = sub(mul(dx1, dy2), mul(dx2, dy1));
+    const Bounded a = div(sub(mul(dz1, dy2), mul(dz2, dy1)), det);
+    const Bounded b = div(sub(mul(dx1, dz2), mul(dx2, dz1)), det);
     // The evaluation z0 + (a (px - x0) + b (py - y0)) bounded over the box, from the magnitudes.
+    const double u = kUnitDouble;
     const double reach_x = std::max(std::abs(s.i_lo + c.ox_min - v[0].x), std::abs(s.i_hi + c.ox_max - v[0].x));
     const double reach_y = std::max(std::abs(s.j_lo + c.oy_min - v[0].y), std::abs(s.j_hi + c.oy_max - v[0].y));
-    const Bounded tx = mul({std::abs(a.v), a.e}, {reach_x, u * reach_x}, u);
-    const Bounded ty = mul({std::abs(b.v), b.e}, {reach_y, u * reach_y}, u);
-    const Bounded z = add(exact(std::abs(v[0].z)), add(tx, ty, u), u);
+    const Bounded tx = mul({std::abs(a.v), a.e}, {reach_x, u * reach_x});
+    const Bounded ty = mul({std::abs(b.v), b.e}, {reach_y, u * reach_y});
+    const Bounded z = add(exact(std::abs(v[0].z)), add(tx, ty));
     double err = 4 * z.e * kSlack + 4 * DBL_TRUE_MIN;
     if (!std::isfinite(err)) err = std::numeric_limits<double>::infinity();
     return {v[0].x, v[0].y, v[0].z, a.v, b.v, err};
