@@ -14,6 +14,7 @@ namespace rast::fast::detail {
 namespace {
 
 using boost::multiprecision::cpp_int;
+__extension__ using Int128 = __int128;  // GCC and Clang on x86-64
 
 // A dyadic rational m · 2^e. Every double is one, and sums and products of them stay exact in integer
 // arithmetic alone: no gcd per operation, unlike cpp_rational.
@@ -122,17 +123,98 @@ cpp_int scaled(double x, int bits) {
 }
 
 // floor(a / b) for b > 0.
-cpp_int floor_div(const cpp_int& a, const cpp_int& b) {
-    cpp_int q = a / b;
+template <class Int>
+Int floor_div(const Int& a, const Int& b) {
+    Int q = a / b;
     if (a < 0 && q * b != a) --q;
     return q;
 }
 
 // v clamped to [lo - 1, hi + 1]: one past either end already means "no pixel on this side".
-int clamp_to(const cpp_int& v, int lo, int hi) {
+template <class Int>
+int clamp_to(const Int& v, int lo, int hi) {
     if (v < lo) return lo - 1;
     if (v > hi) return hi + 1;
     return static_cast<int>(v);
+}
+
+// floor(Q / d) from row to row while Q grows by `step` per row (d > 0): two divisions at the start, then
+// additions only, as an exact digital differential analyzer.
+template <class Int>
+class RowQuotient {
+public:
+    RowQuotient(const Int& q, const Int& step, const Int& d)
+        : d_(d), quotient_(floor_div(q, d)), remainder_(q - quotient_ * d), step_quotient_(floor_div(step, d)),
+          step_remainder_(step - step_quotient_ * d) {}
+    const Int& value() const { return quotient_; }
+    void next_row() {
+        quotient_ += step_quotient_;
+        remainder_ += step_remainder_;
+        if (remainder_ >= d_) {
+            remainder_ -= d_;
+            ++quotient_;
+        }
+    }
+
+private:
+    Int d_, quotient_, remainder_;  // remainder = Q - quotient d, in [0, d)
+    Int step_quotient_, step_remainder_;
+};
+
+// The covered spans in integers of type Int; scale(x) is x · 2^bits as an Int.
+template <class Int, class Scale>
+std::vector<Span> solve_spans(Scale scale, const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                              std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi) {
+    // Edge a -> b in fixed units: E(X, Y) = A X + B Y + C, A = ay - by, B = bx - ax. Along a sample
+    // row X = i·2^bits + SX, so E is P·i + Q with P = A·2^bits, and the covered pixels are one half-line
+    // per edge: i >= -floor(Q / P) for P > 0, i <= floor(Q / -P) for P < 0, all or none (Q >= 0) for
+    // P = 0. From one sample row to the next Q grows by B·2^bits.
+    struct Edge {
+        Int a, b, c;
+    };
+    std::array<Edge, 3> edges;
+    for (int k = 0; k < 3; ++k) {
+        const Vertex& p = v[k];
+        const Vertex& q = v[(k + 1) % 3];
+        const Int ax = scale(p.x), ay = scale(p.y);
+        Edge& e = edges[k];
+        e.a = ay - scale(q.y);
+        e.b = scale(q.x) - ax;
+        // The tie rule as an integer bias: a non-inclusive edge needs E >= 1.
+        e.c = -(e.a * ax + e.b * ay) - (inclusive[k] ? 0 : 1);
+    }
+    const Int unit = Int(1) << bits;
+    const std::size_t samples = offsets.size();
+    std::vector<Span> spans(static_cast<std::size_t>(j_hi - j_lo + 1) * samples);
+    for (std::size_t s = 0; s < samples; ++s) {
+        const Int sx = scale(offsets[s].x);
+        const Int y = Int(j_lo) * unit + scale(offsets[s].y);
+        std::array<int, 3> sign;
+        std::vector<RowQuotient<Int>> rows;
+        rows.reserve(3);
+        for (int k = 0; k < 3; ++k) {
+            const Edge& e = edges[k];
+            const Int p = e.a * unit;
+            sign[k] = p > 0 ? 1 : p < 0 ? -1 : 0;
+            rows.emplace_back(e.a * sx + e.b * y + e.c, e.b * unit, sign[k] == 0 ? Int(1) : sign[k] > 0 ? p : Int(-p));
+        }
+        for (int j = j_lo; j <= j_hi; ++j) {
+            int lo = i_lo, hi = i_hi;
+            for (int k = 0; k < 3; ++k) {
+                const Int& f = rows[k].value();
+                if (sign[k] == 0) {
+                    if (f < 0) hi = lo - 1;
+                } else if (sign[k] > 0) {
+                    lo = std::max(lo, clamp_to(Int(-f), i_lo, i_hi));
+                } else {
+                    hi = std::min(hi, clamp_to(f, i_lo, i_hi));
+                }
+                rows[k].next_row();
+            }
+            spans[static_cast<std::size_t>(j - j_lo) * samples + s] = {lo, hi};
+        }
+    }
+    return spans;
 }
 
 }  // namespace
@@ -191,45 +273,19 @@ double ExactPlanes::depth(std::int64_t id, const Corners& t, double x, double y)
 std::vector<Span> wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                              std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo,
                              int j_hi) {
-    // Edge a -> b in fixed units: E(X, Y) = A X + B Y + C, A = ay - by, B = bx - ax. Along a sample
-    // row X = i·2^bits + SX, so E is P·i + Q and the covered pixels are one half-line per edge.
-    struct Edge {
-        cpp_int a, b, c;
-    };
-    std::array<Edge, 3> edges;
-    for (int k = 0; k < 3; ++k) {
-        const Vertex& p = v[k];
-        const Vertex& q = v[(k + 1) % 3];
-        const cpp_int ax = scaled(p.x, bits), ay = scaled(p.y, bits);
-        Edge& e = edges[k];
-        e.a = ay - scaled(q.y, bits);
-        e.b = scaled(q.x, bits) - ax;
-        // The tie rule as an integer bias: a non-inclusive edge needs E >= 1.
-        e.c = -(e.a * ax + e.b * ay) - (inclusive[k] ? 0 : 1);
+    // Fixed coordinates within 2^60 (sample positions, below 2^(24 + bits), are): then A and B stay
+    // below 2^61, C below 2^122 and Q below 2^124, so 128-bit integers hold every edge function exactly,
+    // at a small fraction of big-integer cost. A double within 2^60 holding an integer converts exactly.
+    const double limit = std::ldexp(1.0, 60 - bits);
+    const bool fits = std::all_of(v.begin(), v.end(), [limit](const Vertex& p) {
+        return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
+    });
+    if (fits) {
+        const auto scale = [bits](double x) { return Int128(static_cast<std::int64_t>(std::ldexp(x, bits))); };
+        return solve_spans<Int128>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi);
     }
-    const cpp_int unit = cpp_int(1) << bits;
-    std::vector<Span> spans;
-    spans.reserve(static_cast<std::size_t>(j_hi - j_lo + 1) * offsets.size());
-    for (int j = j_lo; j <= j_hi; ++j) {
-        for (const SamplePoint& o : offsets) {
-            const cpp_int sx = scaled(o.x, bits);
-            const cpp_int y = cpp_int(j) * unit + scaled(o.y, bits);
-            int lo = i_lo, hi = i_hi;
-            for (const Edge& e : edges) {
-                const cpp_int p = e.a * unit;
-                const cpp_int q = e.a * sx + e.b * y + e.c;
-                if (p == 0) {
-                    if (q < 0) hi = lo - 1;
-                } else if (p > 0) {
-                    lo = std::max(lo, clamp_to(-floor_div(q, p), i_lo, i_hi));
-                } else {
-                    hi = std::min(hi, clamp_to(floor_div(q, -p), i_lo, i_hi));
-                }
-            }
-            spans.push_back({lo, hi});
-        }
-    }
-    return spans;
+    const auto scale = [bits](double x) { return scaled(x, bits); };
+    return solve_spans<cpp_int>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi);
 }
 
 }  // namespace rast::fast::detail

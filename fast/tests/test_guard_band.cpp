@@ -86,13 +86,16 @@ TEST(GuardBandFixed, DblMaxTriangleIsExact) {
     }
 }
 
-// The fixed-point range: just inside 2^(29-N) the 64-bit path, just outside the wide path, same answer.
-TEST(GuardBandFixed, BothSidesOfTheRange) {
+// Both sides of each range give the same answer: within 2^(29-N) pixels the 64-bit path, beyond it the
+// wide path; within 2^(60-N) the wide path's 128-bit integers, beyond them its big integers.
+TEST(GuardBandFixed, BothSidesOfEachRange) {
     const Viewport vp{8, 4};
-    for (const auto& [p, limit] : {std::pair{Precision::fixed4, 0x1p25}, {Precision::fixed8, 0x1p21},
-                                   {Precision::fixed16, 0x1p13}})
-        for (const double r : {limit / 2, limit, 2 * limit})
-            EXPECT_EQ(covered_pixels(tri(2.5, -r, r, 0, 2.5, r), vp, p), columns_from(2, vp)) << r;
+    for (const int bits : {4, 8, 16}) {
+        const Precision p = bits == 4 ? Precision::fixed4 : bits == 8 ? Precision::fixed8 : Precision::fixed16;
+        for (const double limit : {std::ldexp(1.0, 29 - bits), std::ldexp(1.0, 60 - bits)})
+            for (const double r : {limit / 2, limit, 2 * limit})
+                EXPECT_EQ(covered_pixels(tri(2.5, -r, r, 0, 2.5, r), vp, p), columns_from(2, vp)) << r;
+    }
 }
 
 }  // namespace
