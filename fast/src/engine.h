@@ -125,7 +125,7 @@ enum class TileClass { reject, accept, partial };
 
 // The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: an edge function is linear, so its
 // extremes over the samples' bounding rectangle are at corners chosen by the signs of its coefficients.
-// Exact for the integer path. For the float modes the double value at a corner is within margin of
+// Exact for the integer path; the wide path reads its exact spans instead. For the float modes the double value at a corner is within margin of
 // the exact one minus the mode's error bound, so beyond +-margin the mode's sign is certain.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
     bool all_inside = true;
@@ -156,7 +156,19 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
             }
             break;
         }
-        case Path::wide: return TileClass::partial;
+        case Path::wide: {
+            // Decided when every sample row's span holds all of the tile's columns, or none.
+            bool all_outside = true;
+            const std::size_t samples = c.offsets.size();
+            for (std::size_t k = static_cast<std::size_t>(j0 - t.p.j_lo) * samples;
+                 k < static_cast<std::size_t>(j1 - t.p.j_lo + 1) * samples; ++k) {
+                const Span& span = t.spans[k];
+                all_inside = all_inside && span.lo <= i0 && span.hi >= i1;
+                all_outside = all_outside && (span.lo > i1 || span.hi < i0 || span.lo > span.hi);
+                if (!all_inside && !all_outside) return TileClass::partial;
+            }
+            return all_outside ? TileClass::reject : TileClass::accept;
+        }
     }
     return all_inside ? TileClass::accept : TileClass::partial;
 }

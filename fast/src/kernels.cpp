@@ -19,7 +19,7 @@ using DI = hn::RebindToSigned<D>;
 using MD = hn::Mask<D>;
 using VD = hn::Vec<D>;
 
-std::uint64_t mask_bits(D d, MD m) {
+HWY_INLINE std::uint64_t mask_bits(D d, MD m) {
     std::uint8_t bytes[8] = {};
     hn::StoreMaskBits(d, m, bytes);
     std::uint64_t bits = 0;
@@ -27,7 +27,7 @@ std::uint64_t mask_bits(D d, MD m) {
     return bits;
 }
 
-MD lanes_of(D d, std::uint64_t bits) {
+HWY_INLINE MD lanes_of(D d, std::uint64_t bits) {
     std::uint8_t bytes[8];
     std::memcpy(bytes, &bits, sizeof bytes);
     return hn::LoadMaskBits(d, bytes);
