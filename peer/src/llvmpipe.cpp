@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -18,6 +19,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace rast::peer {
@@ -53,6 +55,18 @@ int count_llvmpipe_threads() {
         n += name.starts_with("llvmpipe-");
     }
     return n;
+}
+
+// The rasterizer threads llvmpipe runs once they have started: each names itself as it starts, so on a
+// loaded machine a count taken right after context creation can come up short. Waits up to a second for
+// `expected` of them; more than that is final at once.
+int settled_llvmpipe_threads(int expected) {
+    int running = count_llvmpipe_threads();
+    for (int wait = 0; running < expected && wait < 100; ++wait) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        running = count_llvmpipe_threads();
+    }
+    return running;
 }
 
 // The monotone map of the scene's z onto NDC [-1/2, 1/2], written so that no step overflows for
@@ -136,7 +150,7 @@ Llvmpipe::Llvmpipe(int threads) : state_(std::make_unique<State>()) {
     if (!state_->renderer.starts_with("llvmpipe")) {
         fail("OSMesa renders with \"" + state_->renderer + "\", not llvmpipe");
     }
-    if (const int running = count_llvmpipe_threads(); running != threads) {
+    if (const int running = settled_llvmpipe_threads(threads); running != threads) {
         fail("asked for " + std::to_string(threads) + " rasterizer threads, but llvmpipe runs " +
              std::to_string(running) +
              ": OSMesa creates llvmpipe once per process and reads LP_NUM_THREADS only then, "
