@@ -94,6 +94,7 @@ struct Setup {
     // Float modes: a tile whose samples all have an exact edge function beyond +-margin on the same
     // side for each edge is classified without evaluating them; +infinity when not computed.
     double float_margin = std::numeric_limits<double>::infinity();
+    bool classify_tiles = true;  // false: every tile is partial (a small triangle gains nothing from the test)
     Plane plane{};
     std::vector<Span> spans;  // wide path: per sample row, see wide_spans
 };
@@ -148,7 +149,12 @@ inline Plane make_plane(const Placed& s, const Context& c) {
 template <Fault F>
 std::optional<Placed> place(const Triangle& t, const Context& c) {
     Placed s;
-    s.v = snap(t, c.precision).v;
+    s.v = t.v;
+    if (c.bits != 0)
+        for (Vertex& p : s.v) {
+            p.x = snap_coordinate(p.x, c.bits);
+            p.y = snap_coordinate(p.y, c.bits);
+        }
     const int orient = orientation(s.v);
     if (orient == 0) return std::nullopt;  // zero area covers nothing
     if (orient < 0) std::swap(s.v[1], s.v[2]);
@@ -179,6 +185,7 @@ template <Fault F>
 Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles) {
     Setup s;
     s.p = placed;
+    s.classify_tiles = classify_tiles;
     const Corners& v = placed.v;
     std::array<bool, 3> inclusive;
     for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(v[k], v[(k + 1) % 3]);

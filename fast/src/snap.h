@@ -32,7 +32,7 @@ inline double snap_coordinate(double x, int bits) {
     const double scaled = x * scale;
     if (!(std::abs(scaled) < 0x1p52)) return x;
     const double shift = std::copysign(0x1p52, scaled);
-    return std::copysign((scaled + shift) - shift, scaled) / scale;
+    return std::copysign((scaled + shift) - shift, scaled) * (1 / scale);  // 1 / scale: exact, a power of two
 }
 
 }  // namespace rast::fast::detail
