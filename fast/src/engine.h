@@ -68,24 +68,29 @@ std::uint64_t float_row_accumulated(const Setup& t, const Context& c, int j, int
     return covered;
 }
 
+// The integer edge functions at block b's first sample (index s) and their steps per column and row.
+inline void fixed_edges_at(const Setup& t, const Context& c, const Block& b, int s, std::int64_t* e,
+                           std::int64_t* dx, std::int64_t* dy) {
+    const std::int64_t x = (std::int64_t{b.i0} << c.bits) + c.sx[s];
+    const std::int64_t y = (std::int64_t{b.j0} << c.bits) + c.sy[s];
+    for (int k = 0; k < 3; ++k) {
+        const FixedEdge& f = t.fixed[k];
+        e[k] = f.a * x + f.b * y + f.c;
+        dx[k] = f.a << c.bits;
+        dy[k] = f.b << c.bits;
+    }
+}
+
 // How the kernels find the samples of block b (sample index s) that t covers; the paths that compute
 // row masks here leave them in `masks`, one per row of the block.
 template <Fault F>
 Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, std::uint64_t* masks) {
     Coverage cov;
     switch (t.p.path) {
-        case Path::fixed: {
+        case Path::fixed:
             cov.kind = Coverage::Kind::fixed;
-            const std::int64_t x = (std::int64_t{b.i0} << c.bits) + c.sx[s];
-            const std::int64_t y = (std::int64_t{b.j0} << c.bits) + c.sy[s];
-            for (int e = 0; e < 3; ++e) {
-                const FixedEdge& f = t.fixed[e];
-                cov.e[e] = f.a * x + f.b * y + f.c;
-                cov.dx[e] = f.a << c.bits;
-                cov.dy[e] = f.b << c.bits;
-            }
+            fixed_edges_at(t, c, b, s, cov.e, cov.dx, cov.dy);
             return cov;
-        }
         case Path::wide: {
             const std::size_t samples = c.offsets.size();
             for (int r = 0; r < b.rows; ++r) {
@@ -298,11 +303,21 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     std::uint64_t masks[kTile], undecided[kTile];
     for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
         const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
-        const Coverage cov = cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
         const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
         const DepthRows rows{tile.z.data() + at, tile.err.data() + at, tile.ids.data() + at, tile.cols};
-        const bool open = b.width * b.rows <= kScalarSamples ? depth_block_scalar(b, cov, plane, rows, undecided)
-                                                             : depth_block(b, cov, plane, rows, undecided);
+        const bool scalar = b.width * b.rows <= kScalarSamples;
+        bool open;
+        if (scalar && cls == TileClass::partial && t.p.path == Path::fixed) {
+            // A small triangle's block: its integer edges straight from the setup, without a Coverage.
+            std::int64_t e[3], dx[3], dy[3];
+            fixed_edges_at(t, c, b, s, e, dx, dy);
+            open = depth_rows_scalar(b, [&](int r) { return fixed_row_coverage(e, dx, dy, b.width, r); }, plane, rows,
+                                     undecided);
+        } else {
+            const Coverage cov = cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
+            open = scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
+                          : depth_block(b, cov, plane, rows, undecided);
+        }
         if (!open) continue;
         for (int r = 0; r < b.rows; ++r)
             if (undecided[r] != 0) resolve<F>(t.p.v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
@@ -380,6 +395,11 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
             const double* z = tile.z.data() + tile.at(s, j - rect.j0, 0);
             std::int32_t* to_ids = fb.ids.data() + fb.index(rect.i0, j, s);
             double* to_depth = fb.depth.data() + fb.index(rect.i0, j, s);
+            if (samples == 1) {  // contiguous on both sides: copies the compiler vectorizes
+                std::transform(ids, ids + width, to_ids, [](std::int64_t id) { return static_cast<std::int32_t>(id); });
+                std::copy(z, z + width, to_depth);
+                continue;
+            }
             for (int k = 0; k < width; ++k) {
                 to_ids[k * samples] = static_cast<std::int32_t>(ids[k]);
                 to_depth[k * samples] = z[k];

@@ -30,33 +30,38 @@ std::uint64_t float_row_coverage(const Block& b, const Coverage& cov, int r) {
     return covered;
 }
 
+// The integer edges of Coverage (e, dx, dy) on row r of a block `width` samples wide.
+inline std::uint64_t fixed_row_coverage(const std::int64_t* e, const std::int64_t* dx, const std::int64_t* dy,
+                                        int width, int r) {
+    std::int64_t e0 = e[0] + r * dy[0], e1 = e[1] + r * dy[1], e2 = e[2] + r * dy[2];
+    std::uint64_t covered = 0;
+    for (int k = 0; k < width; ++k, e0 += dx[0], e1 += dx[1], e2 += dx[2])
+        covered |= std::uint64_t{(e0 | e1 | e2) >= 0} << k;
+    return covered;
+}
+
 // Row r of block b as Coverage defines it.
 inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
     switch (cov.kind) {
         case Coverage::Kind::all: return b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
         case Coverage::Kind::masks: return cov.masks[r];
-        case Coverage::Kind::fixed: {
-            std::int64_t e0 = cov.e[0] + r * cov.dy[0], e1 = cov.e[1] + r * cov.dy[1], e2 = cov.e[2] + r * cov.dy[2];
-            std::uint64_t covered = 0;
-            for (int k = 0; k < b.width; ++k, e0 += cov.dx[0], e1 += cov.dx[1], e2 += cov.dx[2])
-                covered |= std::uint64_t{(e0 | e1 | e2) >= 0} << k;
-            return covered;
-        }
+        case Coverage::Kind::fixed: return fixed_row_coverage(cov.e, cov.dx, cov.dy, b.width, r);
         case Coverage::Kind::float32: return float_row_coverage<float>(b, cov, r);
         case Coverage::Kind::float64: return float_row_coverage<double>(b, cov, r);
     }
     return 0;
 }
 
-// depth_block (kernels.h), one sample at a time.
-inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, DepthRows rows,
-                               std::uint64_t* undecided) {
+// depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r).
+template <class RowMask>
+bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, DepthRows rows,
+                       std::uint64_t* undecided) {
     bool any = false;
     for (int r = 0; r < b.rows; ++r) {
         const double py = double(b.j0 + r) + b.sy;
         const double b_dy = p.b * (py - p.y0);
         std::uint64_t open = 0;
-        for (std::uint64_t m = row_coverage(b, cov, r); m != 0; m &= m - 1) {
+        for (std::uint64_t m = row_mask(r); m != 0; m &= m - 1) {
             const int k = std::countr_zero(m);
             const double px = double(b.i0 + k) + b.sx;
             const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
@@ -75,6 +80,11 @@ inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthP
         any = any || open != 0;
     }
     return any;
+}
+
+inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, DepthRows rows,
+                               std::uint64_t* undecided) {
+    return depth_rows_scalar(b, [&](int r) { return row_coverage(b, cov, r); }, p, rows, undecided);
 }
 
 }  // namespace rast::fast::detail
