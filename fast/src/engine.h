@@ -324,14 +324,7 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     }
 }
 
-// A triangle whose bounding box spans at most kSmallSide pixels each way (so at most 2 x 2 tiles) is
-// binned as it was placed and set up in each tile it is rasterized in: its record is small and read
-// once, where a shared setup would be written, then read back from memory.
-inline constexpr int kSmallSide = 32;
-
-inline bool is_small(const Placed& p) {
-    return p.path != Path::wide && p.i_hi - p.i_lo < kSmallSide && p.j_hi - p.j_lo < kSmallSide;
-}
+inline bool is_small(const Placed& p) { return p.path != Path::wide && is_small(p.i_lo, p.i_hi, p.j_lo, p.j_hi); }
 
 struct SmallTriangle {
     Placed p;
@@ -346,15 +339,29 @@ struct BigTriangle {
 // The triangles of one contiguous id range, binned per tile in id order.
 struct Chunk {
     std::vector<BigTriangle> big;
+    std::vector<std::vector<SmallFixed>> fixed_bins;
     std::vector<std::vector<SmallTriangle>> small_bins;
     std::vector<std::vector<std::uint32_t>> big_bins;  // indices into big
 };
 
 template <Fault F>
 void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, int tiles_x, int tiles) {
+    chunk.fixed_bins.resize(static_cast<std::size_t>(tiles));
     chunk.small_bins.resize(static_cast<std::size_t>(tiles));
     chunk.big_bins.resize(static_cast<std::size_t>(tiles));
+    const bool lean = is_fixed(scene.c.precision) && scene.c.fixed_fits;
     for (std::size_t id = begin; id != end; ++id) {
+        if (lean) {
+            SmallFixed small;
+            const Lane lane = place_small_fixed<F>(scene.triangles[id], static_cast<std::int32_t>(id), scene.c, small);
+            if (lane == Lane::culled) continue;
+            if (lane == Lane::small_fixed) {
+                for (int ty = small.j_lo / kTile; ty <= small.j_hi / kTile; ++ty)
+                    for (int tx = small.i_lo / kTile; tx <= small.i_hi / kTile; ++tx)
+                        chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(small);
+                continue;
+            }
+        }
         const std::optional<Placed> placed = place<F>(scene.triangles[id], scene.c);
         if (!placed) continue;
         const bool small = is_small(*placed);
@@ -372,18 +379,28 @@ template <Fault F>
 void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRect& rect, TileBuffer& tile,
                  const SceneView& scene, Framebuffer& fb) {
     tile.clear();
+    constexpr std::int32_t kEnd = std::numeric_limits<std::int32_t>::max();  // above every id (render checks)
     for (const Chunk& chunk : chunks) {
+        const std::vector<SmallFixed>& fixed = chunk.fixed_bins[index];
         const std::vector<SmallTriangle>& small = chunk.small_bins[index];
         const std::vector<std::uint32_t>& big = chunk.big_bins[index];
-        // Both lists are in id order; merged, the tile composes all its triangles in id order.
-        for (std::size_t a = 0, b = 0; a < small.size() || b < big.size();) {
-            if (b == big.size() || (a < small.size() && small[a].id < chunk.big[big[b]].id)) {
+        // The three lists are in id order; merged, the tile composes all its triangles in id order.
+        for (std::size_t f = 0, a = 0, b = 0;;) {
+            const std::int32_t next_fixed = f < fixed.size() ? fixed[f].id : kEnd;
+            const std::int32_t next_small = a < small.size() ? small[a].id : kEnd;
+            const std::int32_t next_big = b < big.size() ? chunk.big[big[b]].id : kEnd;
+            if (next_fixed < next_small && next_fixed < next_big) {
+                const SmallFixed& t = fixed[f++];
+                const Placed placed = placed_of(t, scene.triangles[static_cast<std::size_t>(t.id)], scene.c);
+                rasterize<F>(setup_triangle<F>(placed, scene.c, false), t.id, rect, tile, scene);
+            } else if (next_small < next_big) {
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;
-            } else {
-                const BigTriangle& t = chunk.big[big[b]];
+            } else if (next_big != kEnd) {
+                const BigTriangle& t = chunk.big[big[b++]];
                 rasterize<F>(t.s, t.id, rect, tile, scene);
-                ++b;
+            } else {
+                break;
             }
         }
     }

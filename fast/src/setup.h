@@ -108,6 +108,15 @@ bool owns_ties(const Vertex& a, const Vertex& b) {
     return b.y == a.y && b.x < a.x;
 }
 
+// [first, last] within [0, size): whether any pixel is left.
+template <Fault F>
+bool clip_range(int size, int& first, int& last) {
+    if constexpr (F == Fault::bbox_one_short) last -= 1;
+    first = std::max(first, 0);
+    last = std::min(last, size - 1);
+    return first <= last;
+}
+
 // Pixels whose samples can lie in [lo, hi] along one axis, given the sample offsets' extent there.
 // Rounding is monotone and the bounds are integers, so ceil/floor of the rounded difference are exact.
 // Clamped to [-1, size] first, where truncation to int is exact and ceil/floor are one correction.
@@ -119,10 +128,18 @@ bool pixel_range(double lo, double hi, double o_min, double o_max, int size, int
     first += first < from;
     last = static_cast<int>(to);
     last -= last > to;
-    if constexpr (F == Fault::bbox_one_short) last -= 1;
-    first = std::max(first, 0);
-    last = std::min(last, size - 1);
-    return first <= last;
+    return clip_range<F>(size, first, last);
+}
+
+// The same in fixed units: lo, hi and the offsets' extent are multiples of 2^-bits times 2^bits, and
+// an arithmetic shift right is floor division by 2^bits.
+template <Fault F>
+bool pixel_range(std::int64_t lo, std::int64_t hi, std::int64_t o_min, std::int64_t o_max, int bits, int size,
+                 int& first, int& last) {
+    const std::int64_t from = -((o_max - lo) >> bits), to = (hi - o_min) >> bits;  // ceil and floor
+    first = static_cast<int>(std::clamp<std::int64_t>(from, -1, size));
+    last = static_cast<int>(std::clamp<std::int64_t>(to, -1, size));
+    return clip_range<F>(size, first, last);
 }
 
 inline Plane make_plane(const Placed& s, const Context& c) {
@@ -169,6 +186,73 @@ std::optional<Placed> place(const Triangle& t, const Context& c) {
                       });
     s.path = !is_fixed(c.precision) ? Path::floating : fits ? Path::fixed : Path::wide;
     return s;
+}
+
+// A triangle whose bounding box spans at most kSmallSide pixels each way (so at most 2 x 2 tiles) is
+// binned as it was placed and set up in each tile it is rasterized in: its record is small and read
+// once, where a shared setup would be written, then read back from memory.
+inline constexpr int kSmallSide = 32;
+
+inline bool is_small(int i_lo, int i_hi, int j_lo, int j_hi) {
+    return i_hi - i_lo < kSmallSide && j_hi - j_lo < kSmallSide;
+}
+
+// A small triangle of the 64-bit fixed path as binned, the common case kept compact: snapped and
+// counter-clockwise in fixed units, with its pixel bounding box. The tile reads its depths from the input.
+struct SmallFixed {
+    std::int32_t x[3], y[3];  // |.| <= 2^29
+    std::int32_t i_lo, i_hi, j_lo, j_hi;
+    std::int32_t id;
+    bool flipped;  // vertices 1 and 2 were swapped to wind counter-clockwise
+};
+
+enum class Lane { culled, small_fixed, general };
+
+// place() in integers, for a fixed-mode context whose viewport is in the 64-bit range: culled (zero area
+// or no sample of the viewport), small_fixed with `out` filled, or general when place() must decide (a
+// coordinate beyond the range, or a triangle that is not small).
+template <Fault F>
+Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, SmallFixed& out) {
+    const double scale = static_cast<double>(std::int64_t{1} << c.bits);
+    std::int64_t x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+        const Vertex& p = t.v[k];
+        // Within the range, and so is the snapped value: the range's end is on the grid.
+        if (!(std::abs(p.x) <= c.coordinate_limit && std::abs(p.y) <= c.coordinate_limit)) return Lane::general;
+        x[k] = grid_units(p.x, scale);  // |p.x · scale| <= 2^29
+        y[k] = grid_units(p.y, scale);
+    }
+    // Differences below 2^30, products below 2^60: exact in 64 bits.
+    const std::int64_t cross = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
+    if (cross == 0) return Lane::culled;
+    out.flipped = cross < 0;
+    if (out.flipped) {
+        std::swap(x[1], x[2]);
+        std::swap(y[1], y[2]);
+    }
+    const auto [xmin, xmax] = std::minmax({x[0], x[1], x[2]});
+    const auto [ymin, ymax] = std::minmax({y[0], y[1], y[2]});
+    if (!pixel_range<F>(xmin, xmax, c.sx_min, c.sx_max, c.bits, c.vp.width, out.i_lo, out.i_hi) ||
+        !pixel_range<F>(ymin, ymax, c.sy_min, c.sy_max, c.bits, c.vp.height, out.j_lo, out.j_hi))
+        return Lane::culled;
+    if (!is_small(out.i_lo, out.i_hi, out.j_lo, out.j_hi)) return Lane::general;
+    for (int k = 0; k < 3; ++k) {
+        out.x[k] = static_cast<std::int32_t>(x[k]);
+        out.y[k] = static_cast<std::int32_t>(y[k]);
+    }
+    out.id = id;
+    return Lane::small_fixed;
+}
+
+// What place() would have made of the input triangle `t` that `s` records.
+inline Placed placed_of(const SmallFixed& s, const Triangle& t, const Context& c) {
+    const double unit = 1 / static_cast<double>(std::int64_t{1} << c.bits);  // exact: a power of two
+    Placed p{{}, s.i_lo, s.i_hi, s.j_lo, s.j_hi, Path::fixed};
+    for (int k = 0; k < 3; ++k) {
+        const int from = s.flipped && k != 0 ? 3 - k : k;
+        p.v[k] = {s.x[k] * unit, s.y[k] * unit, t.v[from].z};
+    }
+    return p;
 }
 
 // The float modes' tile margin: the mode's edge error bound plus that of the double evaluation the tile

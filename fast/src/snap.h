@@ -35,4 +35,11 @@ inline double snap_coordinate(double x, int bits) {
     return std::copysign((scaled + shift) - shift, scaled) * (1 / scale);  // 1 / scale: exact, a power of two
 }
 
+// x · 2^bits rounded to the nearest integer, ties to even, as snap_coordinate rounds, for
+// |x · 2^bits| <= 2^51: adding 1.5 · 2^52 gives a sum in [2^52, 2^53), where the ulp is 1, so the
+// addition itself rounds as wanted, and subtracting it back is exact.
+inline std::int64_t grid_units(double x, double scale) {
+    return static_cast<std::int64_t>((x * scale + 0x1.8p52) - 0x1.8p52);
+}
+
 }  // namespace rast::fast::detail

@@ -17,6 +17,20 @@ inline Pixels covered_pixels(const Triangle& t, Viewport vp, Precision p) {
     return out;
 }
 
+// The pixels render() gives to triangle 0 when it is drawn alone: the path a scene takes, where
+// covered_pixels takes the one for a single triangle.
+inline Pixels rendered_pixels(const Triangle& t, Viewport vp, Precision p) {
+    Scene scene;
+    scene.viewport = vp;
+    scene.triangles = {t};
+    const Framebuffer fb = render(scene, {p, 1});
+    Pixels out;
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i)
+            if (fb.id(i, j) == 0) out.insert({i, j});
+    return out;
+}
+
 inline constexpr Precision kAllPrecisions[] = {Precision::fixed4, Precision::fixed8, Precision::fixed16,
                                                Precision::float32, Precision::float64};
 

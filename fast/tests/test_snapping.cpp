@@ -9,6 +9,7 @@ namespace rast::fast {
 namespace {
 
 using testing::covered_pixels;
+using testing::rendered_pixels;
 using testing::tri;
 
 double snap_x(double x, Precision p) { return snap(tri(x, 0, 0, 0, 0, 0), p).v[0].x; }
@@ -42,6 +43,30 @@ TEST(Snapping, LargeCoordinates) {
     EXPECT_EQ(snap_x(0x1p40 + 0x1p-12, Precision::fixed16), 0x1p40 + 0x1p-12);
     // The float modes do not snap.
     EXPECT_EQ(snap_x(0.3, Precision::float32), 0.3);
+}
+
+// A left edge x = c (it runs down the counter-clockwise boundary, so it owns the centres on it): column
+// 0 (centres x = 0.5) is covered iff c snaps to <= 0.5, and the rest of the 4 x 4 viewport lies inside.
+// 0.5 is an even number of grid steps, so a tie next to it rounds onto it: c = 0.5 +- g/2 covers
+// column 0 (rounding half up would not), 0.5 + 3g/4 does not (truncating would), nor does 0.5 + 3g/2
+// (to the even 0.5 + 2g). The scene path (render) and the single-triangle path (covered_samples) snap
+// separately; both must round so.
+TEST(Snapping, HalfwayVerticesSnapToEvenInEveryPath) {
+    const Viewport vp{4, 4};
+    testing::Pixels all, right;
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) (i == 0 ? all : right).insert({i, j});
+    all.insert(right.begin(), right.end());
+    for (const auto& [p, bits] : {std::pair{Precision::fixed4, 4}, {Precision::fixed8, 8}, {Precision::fixed16, 16}}) {
+        const double g = std::ldexp(1.0, -bits);
+        for (const auto& [c, covers_column_0] : {std::pair{0.5 - 0.5 * g, true}, {0.5 + 0.5 * g, true},
+                                                 {0.5 + 0.75 * g, false}, {0.5 + 1.5 * g, false}}) {
+            const Triangle t = tri(c, 9, c, -1, 9, -1);
+            const testing::Pixels expected = covers_column_0 ? all : right;
+            EXPECT_EQ(rendered_pixels(t, vp, p), expected) << bits << " bits, c = " << c;
+            EXPECT_EQ(covered_pixels(t, vp, p), expected) << bits << " bits, c = " << c;
+        }
+    }
 }
 
 // The left edge at x = 0.5 + 1/64 snaps onto the centres x = 0.5 at 4 bits (1/64 is a quarter step):
