@@ -198,12 +198,13 @@ inline bool is_small(int i_lo, int i_hi, int j_lo, int j_hi) {
 }
 
 // A small triangle of the 64-bit fixed path as binned, the common case kept compact: snapped and
-// counter-clockwise in fixed units, with its pixel bounding box. The tile reads its depths from the input.
+// counter-clockwise in fixed units, with its depths and pixel bounding box (the tile reads nothing else,
+// so it never goes back to the input, which would cost a cache miss per triangle).
 struct SmallFixed {
+    double z[3];
     std::int32_t x[3], y[3];  // |.| <= 2^29
     std::int32_t i_lo, i_hi, j_lo, j_hi;
     std::int32_t id;
-    bool flipped;  // vertices 1 and 2 were swapped to wind counter-clockwise
 };
 
 enum class Lane { culled, small_fixed, general };
@@ -225,10 +226,11 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
     // Differences below 2^30, products below 2^60: exact in 64 bits.
     const std::int64_t cross = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
     if (cross == 0) return Lane::culled;
-    out.flipped = cross < 0;
-    if (out.flipped) {
+    for (int k = 0; k < 3; ++k) out.z[k] = t.v[k].z;
+    if (cross < 0) {
         std::swap(x[1], x[2]);
         std::swap(y[1], y[2]);
+        std::swap(out.z[1], out.z[2]);
     }
     const auto [xmin, xmax] = std::minmax({x[0], x[1], x[2]});
     const auto [ymin, ymax] = std::minmax({y[0], y[1], y[2]});
@@ -244,14 +246,11 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
     return Lane::small_fixed;
 }
 
-// What place() would have made of the input triangle `t` that `s` records.
-inline Placed placed_of(const SmallFixed& s, const Triangle& t, const Context& c) {
+// What place() makes of the triangle that `s` records.
+inline Placed placed_of(const SmallFixed& s, const Context& c) {
     const double unit = 1 / static_cast<double>(std::int64_t{1} << c.bits);  // exact: a power of two
     Placed p{{}, s.i_lo, s.i_hi, s.j_lo, s.j_hi, Path::fixed};
-    for (int k = 0; k < 3; ++k) {
-        const int from = s.flipped && k != 0 ? 3 - k : k;
-        p.v[k] = {s.x[k] * unit, s.y[k] * unit, t.v[from].z};
-    }
+    for (int k = 0; k < 3; ++k) p.v[k] = {s.x[k] * unit, s.y[k] * unit, s.z[k]};
     return p;
 }
 
