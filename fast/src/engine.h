@@ -350,6 +350,12 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     chunk.small_bins.resize(static_cast<std::size_t>(tiles));
     chunk.big_bins.resize(static_cast<std::size_t>(tiles));
     const bool lean = is_fixed(scene.c.precision) && scene.c.fixed_fits;
+    if (lean) {
+        // Room for a uniform spread with some slack, so that most bins never reallocate and copy; pages
+        // of it never written are never touched.
+        const std::size_t expected = (end - begin) / static_cast<std::size_t>(tiles);
+        for (std::vector<SmallFixed>& bin : chunk.fixed_bins) bin.reserve(expected + expected / 2 + 8);
+    }
     for (std::size_t id = begin; id != end; ++id) {
         if (lean) {
             SmallFixed small;
