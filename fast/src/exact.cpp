@@ -122,11 +122,12 @@ cpp_int scaled(double x, int bits) {
     return d.m / (cpp_int(1) << static_cast<unsigned>(-shift));  // exact: the low bits are zero on the grid
 }
 
-// floor(a / b) for b > 0.
+// floor(a / b) for b > 0. (No ++ or -- on cpp_int anywhere: Boost 1.74's ++ turns -(2^64 k + 1) into
+// +(2^64 k), for k >= 1; += 1 and -= 1 are right.)
 template <class Int>
 Int floor_div(const Int& a, const Int& b) {
     Int q = a / b;
-    if (a < 0 && q * b != a) --q;
+    if (a < 0 && q * b != a) q -= 1;
     return q;
 }
 
@@ -152,7 +153,7 @@ public:
         remainder_ += step_remainder_;
         if (remainder_ >= d_) {
             remainder_ -= d_;
-            ++quotient_;
+            quotient_ += 1;  // not ++: see floor_div
         }
     }
 
