@@ -80,6 +80,7 @@ std::vector<BenchScene> main_scenes(const Config& config, const Plan& plan) {
     };
     std::vector<BenchScene> scenes;
     scenes.push_back(generated("tiny", spec(Shape::tiny, 5000)));
+    scenes.push_back(generated("small", spec(Shape::small, 5000)));
     scenes.push_back(generated("medium", spec(Shape::medium, 500)));
     scenes.push_back(generated("large", spec(Shape::large, 50)));
     scenes.push_back(generated("needle", spec(Shape::needle, 500)));
