@@ -130,8 +130,9 @@ enum class TileClass { reject, accept, partial };
 
 // The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: an edge function is linear, so its
 // extremes over the samples' bounding rectangle are at corners chosen by the signs of its coefficients.
-// Exact for the integer path; the wide path reads its exact spans instead. For the float modes the double value at a corner is within margin of
-// the exact one minus the mode's error bound, so beyond +-margin the mode's sign is certain.
+// Exact for the integer path; the wide path reads its exact spans instead. For the float modes the
+// double value at a corner is within margin of the exact one minus the mode's error bound, so beyond
+// +-margin the mode's sign is certain.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
     if (!t.classify_tiles) return TileClass::partial;
     bool all_inside = true;

@@ -62,7 +62,8 @@ void expect_corner_only(const Framebuffer& fb, Viewport vp) {
         for (int i = 0; i < vp.width; ++i) {
             const bool corner = i == 0 && j == 0;
             EXPECT_EQ(fb.id(i, j), corner ? 0 : Framebuffer::kNoTriangle) << i << ", " << j;
-            EXPECT_EQ(fb.depth[fb.index(i, j)], corner ? 0.5 : std::numeric_limits<double>::infinity()) << i << ", " << j;
+            const double depth = corner ? 0.5 : std::numeric_limits<double>::infinity();
+            EXPECT_EQ(fb.depth[fb.index(i, j)], depth) << i << ", " << j;
         }
 }
 
