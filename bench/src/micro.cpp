@@ -88,6 +88,8 @@ void register_benchmarks() {
         {.shape = Shape::small, .triangles = 100'000, .on_grid_256 = true},
         {.shape = Shape::medium, .triangles = 10'000},
         {.shape = Shape::large, .triangles = 10'000},
+        // rast bench's large scene: depth complexity 10 rather than 100, so hierarchical z culls little.
+        {.shape = Shape::large, .triangles = 1'000, .depth = Depth::separated},
         {.shape = Shape::needle, .triangles = 10'000},
         {.shape = Shape::huge, .triangles = 10'000},
         {.shape = Shape::mesh, .triangles = 100'000},

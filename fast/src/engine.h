@@ -191,7 +191,7 @@ struct TileBuffer {
           z(size + kRowLanes, std::numeric_limits<double>::infinity()),
           err(size + kRowLanes, 0.0),
           ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
-    // Empty again; err is read only where an id is stored.
+    // Empty again, as DepthRows (kernels.h) defines it: z = +infinity; err may keep its old values.
     void clear() {
         std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
         std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
@@ -206,10 +206,8 @@ struct TileBuffer {
         for (int s = 0; s < samples; ++s)
             for (int row = 0; row < height; ++row) {
                 const std::size_t from = at(s, row, 0);
-                for (std::size_t k = from; k < from + static_cast<std::size_t>(width); ++k) {
-                    if (ids[k] < 0) return;
-                    largest = std::max(largest, z[k] + err[k]);
-                }
+                largest = std::max(largest, farthest(&z[from], &err[from], &ids[from], static_cast<std::size_t>(width)));
+                if (largest == std::numeric_limits<double>::infinity()) return;
             }
         far = largest;
     }

@@ -7,7 +7,9 @@
 
 #include "kernels.h"
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
 
 HWY_BEFORE_NAMESPACE();
 namespace rast::fast::detail::HWY_NAMESPACE {
@@ -136,7 +138,7 @@ struct Float32Edges {
 };
 
 template <class Evaluator>
-void CoverageLoop(const Block& b, Evaluator& ev, std::uint64_t* covered) {
+void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
@@ -155,14 +157,16 @@ void CoverageLoop(const Block& b, Evaluator& ev, std::uint64_t* covered) {
 
 // A sample row meets the triangle in one run of samples: along the row each edge's value is monotone
 // (exact, or correctly rounded operations on a monotone px), so its inside is a half-line.
+// The evaluator is taken by value: a local whose address never escapes stays in registers, where one
+// behind a reference is reloaded and stored around every vector store (an integer vector store may alias
+// anything).
 template <class Evaluator>
-bool DepthLoop(const Block& b, Evaluator& ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
+bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
     const DI di;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto z0 = hn::Set(d, p.z0), a = hn::Set(d, p.a), x0 = hn::Set(d, p.x0), e = hn::Set(d, p.err);
     const auto id = hn::Set(di, p.id);
-    const auto none = hn::Zero(di);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
     bool any = false;
     for (int r = 0; r < b.rows; ++r) {
@@ -184,16 +188,12 @@ bool DepthLoop(const Block& b, Evaluator& ev, const DepthPlane& p, DepthRows row
             seen = true;
             const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
             const auto stored = hn::LoadU(d, z + k), stored_err = hn::LoadU(d, err + k);
-            const auto stored_id = hn::LoadU(di, ids + k);
-            const auto empty = hn::RebindMask(d, hn::Lt(stored_id, none));
-            const auto nearer = hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err));
+            const auto write = hn::And(mask, hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err)));
             const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_err));
-            const auto write =
-                hn::And(mask, hn::Or(hn::And(empty, hn::IsFinite(depth)), hn::AndNot(empty, nearer)));
             hn::StoreU(hn::IfThenElse(write, depth, stored), d, z + k);
             hn::StoreU(hn::IfThenElse(write, e, stored_err), d, err + k);
-            hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, stored_id), di, ids + k);
-            const auto open = hn::AndNot(hn::Or(write, hn::AndNot(empty, farther)), mask);
+            hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, ids + k)), di, ids + k);
+            const auto open = hn::AndNot(hn::Or(write, farther), mask);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
         undecided[r] = open_bits;
@@ -237,6 +237,26 @@ bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, DepthRow
     return with_evaluator(b, c, [&](auto& ev) { return DepthLoop(b, ev, p, rows, undecided); });
 }
 
+double Farthest(const double* z, const double* err, const std::int64_t* ids, std::size_t n) {
+    const D d;
+    const DI di;
+    const std::size_t lanes = hn::Lanes(d);
+    const auto none = hn::Zero(di);
+    auto largest = hn::Set(d, -std::numeric_limits<double>::infinity());
+    std::size_t k = 0;
+    for (; k + lanes <= n; k += lanes) {
+        if (!hn::AllFalse(di, hn::Lt(hn::LoadU(di, ids + k), none))) return std::numeric_limits<double>::infinity();
+        const auto bound = hn::Add(hn::LoadU(d, z + k), hn::LoadU(d, err + k));
+        largest = hn::IfThenElse(hn::Gt(bound, largest), bound, largest);
+    }
+    double result = hn::GetLane(hn::MaxOfLanes(d, largest));
+    for (; k < n; ++k) {
+        if (ids[k] < 0) return std::numeric_limits<double>::infinity();
+        result = std::max(result, z[k] + err[k]);
+    }
+    return result;
+}
+
 }  // namespace rast::fast::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -245,6 +265,7 @@ namespace rast::fast::detail {
 
 HWY_EXPORT(CoverageBlock);
 HWY_EXPORT(DepthBlock);
+HWY_EXPORT(Farthest);
 
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered) {
     HWY_DYNAMIC_DISPATCH(CoverageBlock)(block, coverage, covered);
@@ -253,6 +274,10 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided) {
     return HWY_DYNAMIC_DISPATCH(DepthBlock)(block, coverage, plane, rows, undecided);
+}
+
+double farthest(const double* z, const double* err, const std::int64_t* ids, std::size_t n) {
+    return HWY_DYNAMIC_DISPATCH(Farthest)(z, err, ids, n);
 }
 
 }  // namespace rast::fast::detail

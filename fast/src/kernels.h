@@ -43,7 +43,9 @@ struct DepthPlane {
 };
 
 // A tile's z-buffer at the block's first sample, rows `stride` apart. The kernel reads and rewrites (with
-// their own values) up to a vector past the end of a row: the buffers need that much padding.
+// their own values) up to a vector past the end of a row: the buffers need that much padding. An empty
+// slot (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it, and any err:
+// a finite one leaves z - err infinite, an infinite one makes it NaN, which decides nothing.
 struct DepthRows {
     double* z;
     double* err;
@@ -54,10 +56,15 @@ struct DepthRows {
 // covered[r]: the covered samples of row r.
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
 
-// For every covered sample: written (z, err, id) when the slot is empty and z finite, or when
-// z + err < z' - err' (decided nearer); left when z - err > z' + err' (decided farther). undecided[r]
-// gets the rest of row r, for the exact comparison; returns whether there are any.
+// For every covered sample: written (z, err, id) when z + err < z' - err' (decided nearer); left when
+// z - err > z' + err' (decided farther). undecided[r] gets the rest of row r, for the exact comparison;
+// returns whether there are any.
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
+
+// The largest z[k] + err[k] for k < n, or +infinity when any slot is empty (ids[k] < 0). The maximum
+// is exact, so the order the lanes take does not matter. A NaN (z = -infinity, err = +infinity: a
+// depth below -DBL_MAX) raises nothing.
+double farthest(const double* z, const double* err, const std::int64_t* ids, std::size_t n);
 
 }  // namespace rast::fast::detail

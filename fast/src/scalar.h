@@ -66,13 +66,12 @@ bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, De
             const double px = double(b.i0 + k) + b.sx;
             const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
             const std::ptrdiff_t at = r * rows.stride + k;
-            const bool empty = rows.ids[at] < 0;
             const double stored = rows.z[at], stored_err = rows.err[at];
-            if (empty ? std::isfinite(z) : z + p.err < stored - stored_err) {
+            if (z + p.err < stored - stored_err) {
                 rows.z[at] = z;
                 rows.err[at] = p.err;
                 rows.ids[at] = p.id;
-            } else if (empty || !(z - p.err > stored + stored_err)) {
+            } else if (!(z - p.err > stored + stored_err)) {
                 open |= std::uint64_t{1} << k;
             }
         }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace rast::fast {
 namespace {
 
@@ -115,6 +117,23 @@ TEST_P(Depth, OverflowingPlaneWritesTheExactDepthRounded) {
     EXPECT_EQ(fb.id(0, 0), 0);
     EXPECT_EQ(fb.id(1, 0), 0);
     EXPECT_EQ(fb.id(0, 1), 1);
+}
+
+// A flat triangle at z = DBL_MAX: its depth is finite, but its depth plus the plane's error bound is not,
+// so the filtered test cannot place it before an empty slot. The slot takes it all the same, and an equal
+// triangle behind it loses the tie.
+TEST_P(Depth, DepthAtTheLargestDoubleIsWritten) {
+    Scene scene;
+    scene.viewport = {4, 4};
+    const double top = std::numeric_limits<double>::max();
+    const Triangle t = tri(0, 0, 8, 0, 0, 8, top);
+    scene.triangles = {t, t};
+    const Framebuffer fb = render(scene, {GetParam(), 1});
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_EQ(fb.id(i, j), 0);
+            EXPECT_EQ(fb.depth[fb.index(i, j)], top);
+        }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllModes, Depth, ::testing::ValuesIn(testing::kAllPrecisions),
