@@ -1,10 +1,11 @@
-// rast_bench_micro: the fast path and llvmpipe on the same generated scenes, as triangles/s and
-// pixels/s. Pixels are the pixel centres covered by the scene's triangles, counted before the depth
+// rast_bench_micro: the fast path, llvmpipe and the exact reference on the same generated scenes, as
+// triangles/s and pixels/s. Pixels are the pixel centres covered by the scene's triangles, counted before the depth
 // test (every engine produces the same fragments); times are wall-clock.
 #include "llvmpipe_timing.h"
 
 #include <rast/bench_scenes.h>
 #include <rast/fast.h>
+#include <rast/reference.h>
 
 #include <benchmark/benchmark.h>
 
@@ -63,6 +64,15 @@ void fast_path(benchmark::State& state, SceneSpec spec, fast::Precision precisio
     }
 }
 
+void reference(benchmark::State& state, SceneSpec spec) {
+    const Scene& scene = scene_for(spec);
+    set_rates(state, spec);
+    for (auto _ : state) {
+        const Framebuffer fb = reference::render(scene);
+        benchmark::DoNotOptimize(fb.ids.data());
+    }
+}
+
 void llvmpipe(benchmark::State& state, SceneSpec spec, int threads) {
     std::vector<double> seconds;
     try {
@@ -113,6 +123,9 @@ void register_benchmarks() {
                 ->Unit(benchmark::kMillisecond)
                 ->UseManualTime();
         }
+        benchmark::RegisterBenchmark(("reference/threads:1/" + label).c_str(), reference, spec)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
     }
 }
 

@@ -285,6 +285,16 @@ public:
         fb_.depth[index] = depth;
     }
 
+    // Whether a fragment at q whose exact depth is at least `lower` loses to the stored one, for
+    // certain: rounding to nearest is monotone, so its rounded depth is at least lower, a double. Most
+    // fragments behind others are turned away here, before their depth is enclosed.
+    bool certainly_behind(const Sample& q, double lower) {
+        const std::size_t index = fb_.index(q.i, q.j, q.s);
+        if (fb_.ids[index] == Framebuffer::kNoTriangle || !(lower > fb_.depth[index])) return false;
+        ++stats_.depth_tests;
+        return true;
+    }
+
 private:
     double nearest(std::int32_t id, const Sample& q, const std::optional<detail::Bounded>& z) {
         if (z)
@@ -383,7 +393,9 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
                 for (std::size_t s = 0; s < pattern.size(); ++s) rows[s] = plane->row(q.j + pattern[s].y);
                 row_j = q.j;
             }
-            zbuffer.offer(static_cast<std::int32_t>(k), q, plane->at(rows[static_cast<std::size_t>(q.s)], q.x));
+            const detail::Bounded& row = rows[static_cast<std::size_t>(q.s)];
+            if (zbuffer.certainly_behind(q, plane->lower(row, q.x))) return;
+            zbuffer.offer(static_cast<std::int32_t>(k), q, plane->at(row, q.x));
         });
     }
 

@@ -31,7 +31,8 @@ bool encloses(const Bounded& z, const Rational& q) {
 // Random triangles of every shape the bound must survive: ordinary ones, slivers whose apex is a few
 // ulps off the base, tilted planes whose depth cancels to near zero, and coordinates spread over many
 // binades. At points inside and outside, the enclosure holds the exact depth_at, and whenever the
-// rounding test answers, it answers the exact depth rounded to nearest.
+// rounding test answers, it answers the exact depth rounded to nearest; the cheap lower bound lies
+// below the exact depth, and on ordinary triangles within 2^-40 of it (so that it turns fragments away).
 TEST(BoundedDepth, EnclosesTheExactDepthAndRoundsCorrectly) {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> unit(0, 1);
@@ -54,6 +55,9 @@ TEST(BoundedDepth, EnclosesTheExactDepthAndRoundsCorrectly) {
             const Rational exact = depth_at(t, x, y);
             points += k != 1;
             EXPECT_TRUE(encloses(z, exact)) << n << " " << m;
+            const Rational lower(plane->lower(plane->row(y), x));
+            EXPECT_LE(lower, exact) << n << " " << m;
+            if (k == 0) EXPECT_LT(exact - lower, Rational(0x1p-40)) << n << " " << m;
             if (const auto rounded = detail::nearest(z)) {
                 decided += k != 1;
                 EXPECT_EQ(*rounded, detail::nearest_double(exact)) << n << " " << m;
