@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -36,13 +37,15 @@ inline void validate(Viewport vp, int samples) {
                                     " (expected 1, 4, 8 or 16)");
 }
 
+inline bool is_finite(const Vertex& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+inline bool is_finite(const Triangle& t) { return is_finite(t.v[0]) && is_finite(t.v[1]) && is_finite(t.v[2]); }
+
 inline void validate(const Triangle& t, std::size_t id) {
-    for (int k = 0; k < 3; ++k) {
-        const Vertex& p = t.v[k];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    for (int k = 0; k < 3; ++k)
+        if (!is_finite(t.v[k]))
             throw std::invalid_argument("rast::fast: triangle " + std::to_string(id) + ", vertex " +
                                         std::to_string(k) + ": coordinate is not a finite number");
-    }
 }
 
 inline std::uint64_t span_bits(int from, int to, int i0) {
@@ -337,6 +340,7 @@ struct BigTriangle {
 
 // The triangles of one contiguous id range, binned per tile in id order.
 struct Chunk {
+    std::optional<std::size_t> non_finite;  // the first triangle with a non-finite coordinate: binning stopped there
     std::vector<BigTriangle> big;
     std::vector<std::vector<SmallFixed>> fixed_bins;
     std::vector<std::vector<SmallTriangle>> small_bins;
@@ -356,6 +360,11 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         for (std::vector<SmallFixed>& bin : chunk.fixed_bins) bin.reserve(expected + expected / 2 + 8);
     }
     for (std::size_t id = begin; id != end; ++id) {
+        // Checked here rather than in a pass of its own: the triangles are read once.
+        if (!is_finite(scene.triangles[id])) {
+            chunk.non_finite = id;
+            return;
+        }
         if (lean) {
             SmallFixed small;
             const Lane lane = place_small_fixed<F>(scene.triangles[id], static_cast<std::int32_t>(id), scene.c, small);
@@ -442,7 +451,6 @@ inline void fit(Framebuffer& fb, Viewport vp, int samples) {
 template <Fault F>
 void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     validate(scene.viewport, scene.samples);
-    for (std::size_t id = 0; id < scene.triangles.size(); ++id) validate(scene.triangles[id], id);
     if (options.threads < 0)
         throw std::invalid_argument("rast::fast: thread count " + std::to_string(options.threads) +
                                     " is negative");
@@ -453,7 +461,6 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     const SceneView view{scene.triangles, c};
     const int tiles_x = (c.vp.width + kTile - 1) / kTile, tiles_y = (c.vp.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
-    fit(fb, c.vp, scene.samples);
 
     tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
@@ -470,6 +477,13 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
             for (std::size_t k = r.begin(); k != r.end(); ++k)
                 bin_chunk<F>(chunks[k], k * n / chunk_count, (k + 1) * n / chunk_count, view, tiles_x, tiles);
         });
+    });
+    // The chunks are in id order, so the first one that stopped holds the first bad triangle. The
+    // framebuffer is untouched until the scene is known to be valid.
+    for (const Chunk& chunk : chunks)
+        if (chunk.non_finite) validate(scene.triangles[*chunk.non_finite], *chunk.non_finite);
+    fit(fb, c.vp, scene.samples);
+    arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const auto& r) {
             TileBuffer& tile = buffers.local();
             for (int index = r.begin(); index != r.end(); ++index) {

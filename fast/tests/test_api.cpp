@@ -44,6 +44,24 @@ TEST(Api, RejectsBadInput) {
     EXPECT_NO_THROW(render(scene, {Precision::fixed8, 0}));
 }
 
+// Binning checks the coordinates, chunk by chunk and in parallel; the error still names the first bad
+// triangle, not the first one a thread happened to meet.
+TEST(Api, NamesTheFirstBadTriangleOfAScene) {
+    Scene scene;
+    scene.viewport = {64, 64};
+    scene.triangles.assign(20000, Triangle{{{{1, 1, 0}, {9, 1, 0}, {1, 9, 0}}}});
+    scene.triangles[17000].v[0].z = std::numeric_limits<double>::infinity();
+    scene.triangles[3000].v[1].x = std::nan("");
+    for (const int threads : {1, 2}) {
+        try {
+            render(scene, {Precision::fixed8, threads});
+            FAIL() << "a NaN coordinate was accepted";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("triangle 3000, vertex 1"), std::string::npos) << e.what();
+        }
+    }
+}
+
 // One triangle owns pixel (0, 0) alone: the centres (1.5, 0.5) and (0.5, 1.5) lie on its hypotenuse, a
 // right edge (it rises along the counter-clockwise boundary), which does not own them.
 Scene corner_scene(Viewport vp) {
