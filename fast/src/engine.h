@@ -209,7 +209,8 @@ struct TileBuffer {
         for (int s = 0; s < samples; ++s)
             for (int row = 0; row < height; ++row) {
                 const std::size_t from = at(s, row, 0);
-                largest = std::max(largest, farthest(&z[from], &err[from], &ids[from], static_cast<std::size_t>(width)));
+                const std::size_t n = static_cast<std::size_t>(width);
+                largest = std::max(largest, farthest(&z[from], &err[from], &ids[from], n));
                 if (largest == std::numeric_limits<double>::infinity()) return;
             }
         far = largest;
