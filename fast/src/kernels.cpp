@@ -137,6 +137,9 @@ struct Float32Edges {
     hn::Vec<DF> ax[3], d3[3], t1[3], lane, sx;
 };
 
+// The loops take the evaluator (and DepthLoop the block) by value: a local whose address never escapes
+// stays in registers, where one behind a reference is reloaded and stored around every vector store (an
+// integer vector store may alias anything).
 template <class Evaluator>
 void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
     const D d;
@@ -157,9 +160,6 @@ void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
 
 // A sample row meets the triangle in one run of samples: along the row each edge's value is monotone
 // (exact, or correctly rounded operations on a monotone px), so its inside is a half-line.
-// The evaluator is taken by value: a local whose address never escapes stays in registers, where one
-// behind a reference is reloaded and stored around every vector store (an integer vector store may alias
-// anything).
 template <class Evaluator>
 bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
