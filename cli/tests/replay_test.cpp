@@ -6,9 +6,11 @@
 #include <rast/tri_format.h>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 namespace {
 
@@ -39,9 +41,13 @@ rast::Scene horizontal_split() {
     return scene;
 }
 
+// A directory of each test's own: ctest runs the tests of this file in parallel processes, and a shared
+// one was emptied by one test under another's feet.
 class Replay : public ::testing::Test {
 protected:
-    fs::path dir = fs::temp_directory_path() / "rast_replay_test";
+    fs::path dir = fs::temp_directory_path() /
+                   ("rast-replay-" + std::to_string(::getpid()) + "-" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
     void SetUp() override {
         fs::remove_all(dir);
         fs::create_directories(dir);
