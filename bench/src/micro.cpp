@@ -1,6 +1,6 @@
 // rast_bench_micro: the fast path, llvmpipe and the exact reference on the same generated scenes, as
-// triangles/s and pixels/s. Pixels are the pixel centres covered by the scene's triangles, counted before the depth
-// test (every engine produces the same fragments); times are wall-clock.
+// triangles/s and pixels/s. Pixels are the pixel centres covered by the scene's triangles, counted before
+// the depth test (every engine produces the same fragments); times are wall-clock.
 #include "llvmpipe_timing.h"
 
 #include <rast/bench_scenes.h>
