@@ -35,8 +35,8 @@ HWY_INLINE MD lanes_of(D d, std::uint64_t bits) {
     return hn::LoadMaskBits(d, bytes);
 }
 
-// Each evaluator is told the row (start_row), then asked for the lanes from k = 0 upwards in steps of
-// Lanes(D) (chunk), px being the lanes' sample x, i + sx.
+// Each evaluator is told the row (start_row, rows in order from 0), then asked for the lanes from k = 0
+// upwards in steps of Lanes(D) (chunk), px being the lanes' sample x, i + sx.
 struct All {
     void start_row(int) {}
     MD chunk(int, VD) { return hn::FirstN(D(), hn::Lanes(D())); }
@@ -50,18 +50,23 @@ struct Masks {
 };
 
 struct FixedEdges {
-    explicit FixedEdges(const Coverage& c) : cov(c) {
+    explicit FixedEdges(const Coverage& c) {
         const DI di;
         const int lanes = static_cast<int>(hn::Lanes(di));
         HWY_ALIGN std::int64_t ramp[HWY_MAX_BYTES / sizeof(std::int64_t)];
         for (int e = 0; e < 3; ++e) {
             for (int k = 0; k < lanes; ++k) ramp[k] = k * c.dx[e];
-            lane[e] = hn::Load(di, ramp);
+            row[e] = hn::Add(hn::Set(di, c.e[e]), hn::Load(di, ramp));
             step[e] = hn::Set(di, c.dx[e] * lanes);
+            down[e] = hn::Set(di, c.dy[e]);
         }
     }
-    void start_row(int r) {
-        for (int e = 0; e < 3; ++e) value[e] = hn::Add(hn::Set(DI(), cov.e[e] + r * cov.dy[e]), lane[e]);
+    // Rows come in order from 0: each starts where the previous one started, one row down.
+    void start_row(int) {
+        for (int e = 0; e < 3; ++e) {
+            value[e] = row[e];
+            row[e] = hn::Add(row[e], down[e]);
+        }
     }
     MD chunk(int, VD) {
         // All three are >= 0 exactly when their bitwise or is > -1.
@@ -69,8 +74,7 @@ struct FixedEdges {
         for (int e = 0; e < 3; ++e) value[e] = hn::Add(value[e], step[e]);
         return hn::RebindMask(D(), inside);
     }
-    const Coverage& cov;
-    hn::Vec<DI> lane[3], step[3], value[3];
+    hn::Vec<DI> row[3], step[3], down[3], value[3];
 };
 
 // The float edges in T = double: px is the depth test's own sample x.
@@ -145,13 +149,15 @@ void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
+    // px = i + sx: sums of integers below 2^25 and multiples of 1/16, exact; lanes at px_end or beyond
+    // are past the block.
+    const auto px_end = hn::Set(d, double(b.i0 + b.width) + b.sx);
     for (int r = 0; r < b.rows; ++r) {
         ev.start_row(r);
         std::uint64_t bits = 0;
-        // px = i + sx: sums of integers below 2^25 and multiples of 1/16, exact.
         auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
         for (int k = 0; k < b.width; k += lanes, px = hn::Add(px, advance)) {
-            const auto m = hn::And(ev.chunk(k, px), hn::FirstN(d, static_cast<std::size_t>(b.width - k)));
+            const auto m = hn::And(ev.chunk(k, px), hn::Lt(px, px_end));
             bits |= mask_bits(d, m) << k;
         }
         covered[r] = bits;
@@ -168,11 +174,14 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     const auto z0 = hn::Set(d, p.z0), a = hn::Set(d, p.a), x0 = hn::Set(d, p.x0), e = hn::Set(d, p.err);
     const auto id = hn::Set(di, p.id);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
-    bool any = false;
-    for (int r = 0; r < b.rows; ++r) {
+    const auto px_end = hn::Set(d, double(b.i0 + b.width) + b.sx);  // as in CoverageLoop
+    // py = j + sy, exact as px is; b (py - y0) is the scalar definition's, lane by lane.
+    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0), down = hn::Set(d, 1.0);
+    auto py = hn::Set(d, double(b.j0) + b.sy);
+    std::uint64_t any = 0;
+    for (int r = 0; r < b.rows; ++r, py = hn::Add(py, down)) {
         ev.start_row(r);
-        const double py = double(b.j0 + r) + b.sy;
-        const auto b_dy = hn::Set(d, p.b * (py - p.y0));
+        const auto b_dy = hn::Mul(pb, hn::Sub(py, y0));
         double* z = rows.z + r * rows.stride;
         double* err = rows.err + r * rows.stride;
         std::int64_t* ids = rows.ids + r * rows.stride;
@@ -180,7 +189,7 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
         bool seen = false;
         auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
         for (int k = 0; k < b.width; k += lanes, px = hn::Add(px, advance)) {
-            const auto mask = hn::And(ev.chunk(k, px), hn::FirstN(d, static_cast<std::size_t>(b.width - k)));
+            const auto mask = hn::And(ev.chunk(k, px), hn::Lt(px, px_end));
             if (hn::AllFalse(d, mask)) {
                 if (seen) break;  // past the row's one run of covered samples
                 continue;
@@ -197,9 +206,9 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
         undecided[r] = open_bits;
-        any = any || open_bits != 0;
+        any |= open_bits;
     }
-    return any;
+    return any != 0;
 }
 
 // Instantiates `loop` with the evaluator for the coverage's kind.
