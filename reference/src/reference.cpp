@@ -101,7 +101,7 @@ struct CcwTriangle {
 struct Run {
     int first, last;
     bool empty() const { return first > last; }
-    bool contains(int i) const { return first <= i && i <= last; }
+    int size() const { return last - first + 1; }
 };
 constexpr Run kEmptyRun{0, -1};
 
@@ -118,8 +118,9 @@ int first_true(int lo, int hi, Pred pred) {
     return lo;
 }
 
+// A covered sample: where it is stored in the framebuffer, and where it is on the screen.
 struct Sample {
-    int i, j, s;
+    std::size_t index;
     double x, y;
 };
 
@@ -153,8 +154,9 @@ public:
         return std::ranges::all_of(t.edges, [&](const Edge& e) { return inside(e, p); });
     }
 
-    // Calls visit(Sample) for every sample in `box` that t covers, in ascending framebuffer order
-    // (row j, then column i, then sample s).
+    // Calls visit(j, s, run) with the covered columns of every sample row in `box` that t covers some
+    // of: sample s of pixel row j; rows ascending, then samples. Runs, not samples, so that the caller
+    // does per row what does not change along it.
     //
     // Why this is exact and cheap: on a sample row (fixed y), the orientation of (from, to, (x, y)) is
     // affine in x with slope -dy: increasing on a left edge, decreasing on a right edge, constant on a
@@ -164,25 +166,16 @@ public:
     // binary search finds each end in O(log w) predicate calls; the samples inside need no test at all.
     // A triangle thus costs O(rows * log w) predicate calls plus O(covered samples).
     template <class Visit>
-    void for_each_covered(const CcwTriangle& t, const detail::PixelBox& box,
-                          std::span<const SamplePoint> pattern, Visit visit) {
+    void for_each_run(const CcwTriangle& t, const detail::PixelBox& box, std::span<const SamplePoint> pattern,
+                      Visit visit) {
         if (box.empty()) return;
-        std::array<Run, 16> runs{};  // one per sample of the largest pattern
-        const int n = static_cast<int>(pattern.size());
-        for (int j = box.j0; j <= box.j1; ++j) {
-            int first = box.i1 + 1, last = box.i0 - 1;
-            for (int s = 0; s < n; ++s) {
+        for (int j = box.j0; j <= box.j1; ++j)
+            for (int s = 0; s < static_cast<int>(pattern.size()); ++s) {
                 const double y = j + pattern[s].y;  // exact: pattern offsets are multiples of 1/16
-                runs[s] = (y < t.ymin || y > t.ymax) ? kEmptyRun
-                                                     : row_run(t, pattern[s].x, y, Run{box.i0, box.i1});
-                if (runs[s].empty()) continue;
-                first = std::min(first, runs[s].first);
-                last = std::max(last, runs[s].last);
+                if (y < t.ymin || y > t.ymax) continue;
+                const Run run = row_run(t, pattern[s].x, y, Run{box.i0, box.i1});
+                if (!run.empty()) visit(j, s, run);
             }
-            for (int i = first; i <= last; ++i)
-                for (int s = 0; s < n; ++s)
-                    if (runs[s].contains(i)) visit(Sample{i, j, s, i + pattern[s].x, j + pattern[s].y});
-        }
     }
 
 private:
@@ -270,7 +263,7 @@ public:
     // Offers the fragment of triangle `id` at sample q; z encloses its depth (none: no bounded plane).
     void offer(std::int32_t id, const Sample& q, const std::optional<detail::Bounded>& z) {
         const double depth = nearest(id, q, z);
-        const std::size_t index = fb_.index(q.i, q.j, q.s);
+        const std::size_t index = q.index;
         const std::int32_t stored = fb_.ids[index];
         if (stored != Framebuffer::kNoTriangle) {
             // The (z, id) order: nearer, or as near and earlier.
@@ -288,8 +281,7 @@ public:
     // Whether a fragment at q whose exact depth is at least `lower` loses to the stored one, for
     // certain: rounding to nearest is monotone, so its rounded depth is at least lower, a double. Most
     // fragments behind others are turned away here, before their depth is enclosed.
-    bool certainly_behind(const Sample& q, double lower) {
-        const std::size_t index = fb_.index(q.i, q.j, q.s);
+    bool certainly_behind(std::size_t index, double lower) {
         if (fb_.ids[index] == Framebuffer::kNoTriangle || !(lower > fb_.depth[index])) return false;
         ++stats_.depth_tests;
         return true;
@@ -348,8 +340,10 @@ std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int sam
     const auto ccw = rasterizer.prepare(t);
     if (!ccw) return indices;
     const Framebuffer fb = layout(vp, samples);
-    rasterizer.for_each_covered(*ccw, detail::pixel_box(t, vp), pattern,
-                                [&](const Sample& q) { indices.push_back(fb.index(q.i, q.j, q.s)); });
+    rasterizer.for_each_run(*ccw, detail::pixel_box(t, vp), pattern, [&](int j, int s, Run run) {
+        for (int i = run.first; i <= run.last; ++i) indices.push_back(fb.index(i, j, s));
+    });
+    std::ranges::sort(indices);  // the runs of a pixel row's samples interleave in the framebuffer
     return indices;
 }
 
@@ -373,29 +367,33 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
     Rasterizer rasterizer(stats);
     Framebuffer fb(scene.viewport, scene.samples);
     ZBuffer zbuffer(scene, fb, stats);
-    std::array<detail::Bounded, 16> rows;  // the plane along each sample row of the current pixel row
 
     for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
         const Triangle& t = scene.triangles[k];
         const auto ccw = rasterizer.prepare(t);
         if (!ccw) continue;
-        std::optional<detail::BoundedPlane> plane;  // made at the first covered sample: many tiny triangles have none
+        const auto id = static_cast<std::int32_t>(k);
+        std::optional<detail::BoundedPlane> plane;  // made at the first covered run: many tiny triangles have none
         bool plane_made = false;
-        int row_j = -1;
-        rasterizer.for_each_covered(*ccw, detail::pixel_box(t, scene.viewport), pattern, [&](const Sample& q) {
-            ++stats.samples_covered;
+        rasterizer.for_each_run(*ccw, detail::pixel_box(t, scene.viewport), pattern, [&](int j, int s, Run run) {
+            stats.samples_covered += static_cast<std::uint64_t>(run.size());
             if (!plane_made) {
                 plane = detail::BoundedPlane::make(t);
                 plane_made = true;
             }
-            if (!plane) return zbuffer.offer(static_cast<std::int32_t>(k), q, std::nullopt);
-            if (q.j != row_j) {
-                for (std::size_t s = 0; s < pattern.size(); ++s) rows[s] = plane->row(q.j + pattern[s].y);
-                row_j = q.j;
+            const double sx = pattern[s].x, y = j + pattern[s].y;
+            const std::size_t first = fb.index(run.first, j, s), step = pattern.size();  // column to column
+            if (!plane) {
+                for (int i = run.first; i <= run.last; ++i)
+                    zbuffer.offer(id, Sample{first + (i - run.first) * step, i + sx, y}, std::nullopt);
+                return;
             }
-            const detail::Bounded& row = rows[static_cast<std::size_t>(q.s)];
-            if (zbuffer.certainly_behind(q, plane->lower(row, q.x))) return;
-            zbuffer.offer(static_cast<std::int32_t>(k), q, plane->at(row, q.x));
+            const detail::Bounded row = plane->row(y);
+            for (int i = run.first; i <= run.last; ++i) {
+                const Sample q{first + (i - run.first) * step, i + sx, y};
+                if (zbuffer.certainly_behind(q.index, plane->lower(row, q.x))) continue;
+                zbuffer.offer(id, q, plane->at(row, q.x));
+            }
         });
     }
 
