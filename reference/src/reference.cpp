@@ -389,9 +389,10 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
                 return;
             }
             const detail::Bounded row = plane->row(y);
+            const detail::AffineLower lower = plane->lower(row);
             for (int i = run.first; i <= run.last; ++i) {
                 const Sample q{first + (i - run.first) * step, i + sx, y};
-                if (zbuffer.certainly_behind(q.index, plane->lower(row, q.x))) continue;
+                if (zbuffer.certainly_behind(q.index, lower(q.x))) continue;
                 zbuffer.offer(id, q, plane->at(row, q.x));
             }
         });

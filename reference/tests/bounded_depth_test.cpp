@@ -55,7 +55,7 @@ TEST(BoundedDepth, EnclosesTheExactDepthAndRoundsCorrectly) {
             const Rational exact = depth_at(t, x, y);
             points += k != 1;
             EXPECT_TRUE(encloses(z, exact)) << n << " " << m;
-            const Rational lower(plane->lower(plane->row(y), x));
+            const Rational lower(plane->lower(plane->row(y))(x));
             EXPECT_LE(lower, exact) << n << " " << m;
             if (k == 0) EXPECT_LT(exact - lower, Rational(0x1p-40)) << n << " " << m;
             if (const auto rounded = detail::nearest(z)) {
@@ -68,6 +68,36 @@ TEST(BoundedDepth, EnclosesTheExactDepthAndRoundsCorrectly) {
     // filter decides, for points inside and outside alike: it is worth having.
     EXPECT_GT(points, 2000);
     EXPECT_GT(decided, points * 9 / 10);
+}
+
+// The row's lower bound on its own, against the least value its enclosures allow, base - base.err +
+// slope (v - origin) - slope.err |v - origin|, computed exactly. Base and slope are mostly exact (err 0, as
+// the coefficients of their error terms then are the only slack) and of nearby magnitudes, and v and
+// origin far apart in magnitude, so that rounding d, m and s all err; the bound must cover every rounding.
+TEST(BoundedDepth, RowLowerBoundIsBelowEveryEnclosedValue) {
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> binade(-40, 40), near(-6, 6), coin(0, 1);
+    const auto bounded = [&](int e) {  // about 2^e, with a low part and an error half of the time
+        const double hi = std::ldexp(unit(rng), e);
+        const double lo = coin(rng) ? 0.0 : std::ldexp(unit(rng), e - 54);
+        const double err = coin(rng) ? 0.0 : std::ldexp(std::abs(unit(rng)), e - 60);
+        return Bounded{detail::two_sum(hi, lo), err};
+    };
+    for (int n = 0; n < 200000; ++n) {
+        const int e = binade(rng), ed = near(rng), es = e - ed + near(rng);
+        const double origin = std::ldexp(unit(rng), ed + near(rng)), v = std::ldexp(unit(rng), ed);
+        const Bounded base = bounded(e), slope = bounded(es);
+        const double lower = detail::AffineLower(base, slope, origin)(v);
+        const Rational d = Rational(v) - Rational(origin);
+        const Rational least = Rational(base.value.hi) + Rational(base.value.lo) - Rational(base.err) +
+                               (Rational(slope.value.hi) + Rational(slope.value.lo)) * d -
+                               Rational(slope.err) * abs(d);
+        ASSERT_LE(Rational(lower), least) << n;
+        // Close enough to turn fragments away: a few ulps of the magnitudes involved.
+        const Rational scale = Rational(std::ldexp(1.0, e)) + Rational(std::ldexp(1.0, es)) * abs(d);
+        ASSERT_LE(least - Rational(lower), scale * Rational(0x1p-45)) << n;
+    }
 }
 
 // z = 1 + (x + 1/2) 2^-53: at the centre x = 1/2 the exact depth 1 + 2^-53 is the midpoint between 1
