@@ -57,7 +57,9 @@ TEST(BoundedDepth, EnclosesTheExactDepthAndRoundsCorrectly) {
             EXPECT_TRUE(encloses(z, exact)) << n << " " << m;
             const Rational lower(plane->lower(plane->row(y))(x));
             EXPECT_LE(lower, exact) << n << " " << m;
-            if (k == 0) EXPECT_LT(exact - lower, Rational(0x1p-40)) << n << " " << m;
+            if (k == 0) {
+                EXPECT_LT(exact - lower, Rational(0x1p-40)) << n << " " << m;
+            }
             if (const auto rounded = detail::nearest(z)) {
                 decided += k != 1;
                 EXPECT_EQ(*rounded, detail::nearest_double(exact)) << n << " " << m;
