@@ -98,6 +98,7 @@ void register_benchmarks() {
         {.shape = Shape::small, .triangles = 100'000, .on_grid_256 = true},
         {.shape = Shape::small, .triangles = 100'000, .depth = Depth::separated},  // rast bench's small scene
         {.shape = Shape::medium, .triangles = 10'000},
+        {.shape = Shape::medium, .triangles = 10'000, .depth = Depth::separated},  // rast bench's medium scene
         {.shape = Shape::large, .triangles = 10'000},
         // rast bench's large scene: depth complexity 10 rather than 100, so hierarchical z culls little.
         {.shape = Shape::large, .triangles = 1'000, .depth = Depth::separated},

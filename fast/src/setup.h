@@ -86,16 +86,17 @@ struct Placed {
     Path path;
 };
 
-// Everything the traversal needs, computed once per triangle.
+// Everything the traversal needs, computed once per triangle. What the common fixed path reads comes
+// first, in as few cache lines as it fits.
 struct Setup {
     Placed p;
     std::array<FixedEdge, 3> fixed{};
+    Plane plane{};
+    bool classify_tiles = true;  // false: every tile is partial (a small triangle gains nothing from the test)
     std::array<FloatEdge, 3> flt{};
     // Float modes: a tile whose samples all have an exact edge function beyond +-margin on the same
     // side for each edge is classified without evaluating them; +infinity when not computed.
     double float_margin = std::numeric_limits<double>::infinity();
-    bool classify_tiles = true;  // false: every tile is partial (a small triangle gains nothing from the test)
-    Plane plane{};
     std::vector<Span> spans;  // wide path: per sample row, see wide_spans
 };
 
