@@ -104,6 +104,7 @@ void register_benchmarks() {
         {.shape = Shape::large, .triangles = 1'000, .depth = Depth::separated},
         {.shape = Shape::needle, .triangles = 10'000},
         {.shape = Shape::huge, .triangles = 10'000},
+        {.shape = Shape::huge, .triangles = 2'000, .depth = Depth::separated},  // rast bench's huge scene
         {.shape = Shape::mesh, .triangles = 100'000},
     };
     for (const SceneSpec& spec : scenes) {
