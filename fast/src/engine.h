@@ -417,7 +417,7 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
             const std::int32_t next_big = b < big.size() ? big[b].id : kEnd;
             if (next_fixed < next_small && next_fixed < next_big) {
                 const SmallFixed& t = fixed[f++];
-                rasterize<F>(setup_triangle<F>(placed_of(t, scene.c), scene.c, false), t.id, rect, tile, scene);
+                rasterize<F>(setup_small<F>(t, scene.c), t.id, rect, tile, scene);
             } else if (next_small < next_big) {
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;

@@ -101,12 +101,26 @@ struct Setup {
 };
 
 // The tie rule of shared/DESIGN.md for edge a -> b of a counter-clockwise triangle: left (dy < 0) and
-// top (dy = 0, dx < 0) edges own their samples.
-template <Fault F>
-bool owns_ties(const Vertex& a, const Vertex& b) {
-    if (b.y < a.y) return true;
-    if constexpr (F == Fault::wrong_tie_bias) return b.y == a.y && b.x > a.x;
-    return b.y == a.y && b.x < a.x;
+// top (dy = 0, dx < 0) edges own their samples. Without branches: edge directions are random, so they
+// would mispredict.
+template <Fault F, class T>
+bool owns_ties(T ax, T ay, T bx, T by) {
+    if constexpr (F == Fault::wrong_tie_bias) return (by < ay) | ((by == ay) & (bx > ax));
+    return (by < ay) | ((by == ay) & (bx < ax));
+}
+
+// The integer edge functions of a counter-clockwise triangle with corners (x[k], y[k]) in fixed units:
+// E >= 0 on an owning edge, E > 0 (E - 1 >= 0 for integers) on the others. Scaling by 2^bits is exact
+// and monotone, so the integers own the same edges as the coordinates they scale.
+template <Fault F, class Int>
+std::array<FixedEdge, 3> fixed_edges(const Int* x, const Int* y) {
+    std::array<FixedEdge, 3> edges;
+    for (int k = 0; k < 3; ++k) {
+        const std::int64_t ax = x[k], ay = y[k], bx = x[(k + 1) % 3], by = y[(k + 1) % 3];
+        const std::int64_t a = ay - by, b = bx - ax;
+        edges[k] = {a, b, -(a * ax + b * ay) - (owns_ties<F>(ax, ay, bx, by) ? 0 : 1)};
+    }
+    return edges;
 }
 
 // [first, last] within [0, size): whether any pixel is left.
@@ -272,7 +286,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
     s.classify_tiles = classify_tiles;
     const Corners& v = placed.v;
     std::array<bool, 3> inclusive;
-    for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(v[k], v[(k + 1) % 3]);
+    for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(v[k].x, v[k].y, v[(k + 1) % 3].x, v[(k + 1) % 3].y);
 
     switch (placed.path) {
         case Path::floating: {
@@ -289,23 +303,32 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
             if (classify_tiles) s.float_margin = float_margin(v, c);
             break;
         }
-        case Path::fixed:
+        case Path::fixed: {
+            const double scale = static_cast<double>(std::int64_t{1} << c.bits);
+            std::int64_t x[3], y[3];
             for (int k = 0; k < 3; ++k) {
-                const Vertex& p = v[k];
-                const Vertex& q = v[(k + 1) % 3];
-                const double scale = static_cast<double>(std::int64_t{1} << c.bits);
-                const auto fixed = [scale](double x) { return static_cast<std::int64_t>(x * scale); };
-                const std::int64_t ax = fixed(p.x), ay = fixed(p.y);
-                const std::int64_t a = ay - fixed(q.y), b = fixed(q.x) - ax;
-                // E >= 0 on an owning edge, E > 0 (E - 1 >= 0 for integers) on the others.
-                s.fixed[k] = {a, b, -(a * ax + b * ay) - (inclusive[k] ? 0 : 1)};
+                x[k] = static_cast<std::int64_t>(v[k].x * scale);
+                y[k] = static_cast<std::int64_t>(v[k].y * scale);
             }
+            s.fixed = fixed_edges<F>(x, y);
             break;
+        }
         case Path::wide:
             s.spans = wide_spans(v, c.bits, inclusive, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi);
             break;
     }
     s.plane = make_plane(placed, c);
+    return s;
+}
+
+// setup_triangle of what `t` records, its edges straight from its integers.
+template <Fault F>
+Setup setup_small(const SmallFixed& t, const Context& c) {
+    Setup s;
+    s.p = placed_of(t, c);
+    s.classify_tiles = false;
+    s.fixed = fixed_edges<F>(t.x, t.y);
+    s.plane = make_plane(s.p, c);
     return s;
 }
 
