@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -396,9 +397,10 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
 // triangle ahead: the setups of a tile's triangles are scattered over the chunk, and each was a cache
 // miss on first touch.
 inline void prefetch(const Setup& s) {
-    const char* first = reinterpret_cast<const char*>(&s);
-    const char* last = reinterpret_cast<const char*>(&s.classify_tiles);
-    for (const char* p = first; p <= last; p += 64) __builtin_prefetch(p);
+    constexpr std::uintptr_t kLine = 64;
+    const auto line_of = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) & ~(kLine - 1); };
+    for (std::uintptr_t line = line_of(&s); line <= line_of(&s.classify_tiles); line += kLine)
+        __builtin_prefetch(reinterpret_cast<const void*>(line));
 }
 
 template <Fault F>

@@ -285,12 +285,17 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
     s.p = placed;
     s.classify_tiles = classify_tiles;
     const Corners& v = placed.v;
-    std::array<bool, 3> inclusive;
-    for (int k = 0; k < 3; ++k) inclusive[k] = owns_ties<F>(v[k].x, v[k].y, v[(k + 1) % 3].x, v[(k + 1) % 3].y);
+    // Which edges own the samples exactly on them (the fixed path's integer bias says it itself).
+    const auto owning_edges = [&v] {
+        std::array<bool, 3> owns;
+        for (int k = 0; k < 3; ++k) owns[k] = owns_ties<F>(v[k].x, v[k].y, v[(k + 1) % 3].x, v[(k + 1) % 3].y);
+        return owns;
+    };
 
     switch (placed.path) {
         case Path::floating: {
             const bool single = c.precision == Precision::float32;
+            const std::array<bool, 3> inclusive = owning_edges();
             const auto in_type = [single](double x) { return single ? double(float(x)) : x; };
             for (int k = 0; k < 3; ++k) {
                 const Vertex& p = v[k];
@@ -314,7 +319,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
             break;
         }
         case Path::wide:
-            s.spans = wide_spans(v, c.bits, inclusive, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi);
+            s.spans = wide_spans(v, c.bits, owning_edges(), c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi);
             break;
     }
     s.plane = make_plane(placed, c);
