@@ -383,15 +383,15 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
             }
             const double sx = pattern[s].x, y = j + pattern[s].y;
             const std::size_t first = fb.index(run.first, j, s), step = pattern.size();  // column to column
+            const auto sample = [&](int i) { return Sample{first + (i - run.first) * step, i + sx, y}; };
             if (!plane) {
-                for (int i = run.first; i <= run.last; ++i)
-                    zbuffer.offer(id, Sample{first + (i - run.first) * step, i + sx, y}, std::nullopt);
+                for (int i = run.first; i <= run.last; ++i) zbuffer.offer(id, sample(i), std::nullopt);
                 return;
             }
             const detail::Bounded row = plane->row(y);
             const detail::AffineLower lower = plane->lower(row);
             for (int i = run.first; i <= run.last; ++i) {
-                const Sample q{first + (i - run.first) * step, i + sx, y};
+                const Sample q = sample(i);
                 if (zbuffer.certainly_behind(q.index, lower(q.x))) continue;
                 zbuffer.offer(id, q, plane->at(row, q.x));
             }

@@ -73,9 +73,10 @@ TEST(BoundedDepth, EnclosesTheExactDepthAndRoundsCorrectly) {
 }
 
 // The row's lower bound on its own, against the least value its enclosures allow, base - base.err +
-// slope (v - origin) - slope.err |v - origin|, computed exactly. Base and slope are mostly exact (err 0, as
-// the coefficients of their error terms then are the only slack) and of nearby magnitudes, and v and
-// origin far apart in magnitude, so that rounding d, m and s all err; the bound must cover every rounding.
+// slope (v - origin) - slope.err |v - origin|, computed exactly. Base and slope are exact half of the time
+// (err 0: the coefficients of the bound's rounding terms are then its only slack) and of nearby magnitudes,
+// and v and origin a few binades apart, so that rounding d, m and s all err; the bound must cover every
+// rounding.
 TEST(BoundedDepth, RowLowerBoundIsBelowEveryEnclosedValue) {
     std::mt19937_64 rng(12);
     std::uniform_real_distribution<double> unit(-1, 1);
