@@ -73,12 +73,12 @@ std::uint64_t float_row_accumulated(const Setup& t, const Context& c, int j, int
 }
 
 // The integer edge functions at block b's first sample (index s) and their steps per column and row.
-inline void fixed_edges_at(const Setup& t, const Context& c, const Block& b, int s, std::int64_t* e,
-                           std::int64_t* dx, std::int64_t* dy) {
+inline void fixed_edges_at(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
+                           std::int64_t* e, std::int64_t* dx, std::int64_t* dy) {
     const std::int64_t x = (std::int64_t{b.i0} << c.bits) + c.sx[s];
     const std::int64_t y = (std::int64_t{b.j0} << c.bits) + c.sy[s];
     for (int k = 0; k < 3; ++k) {
-        const FixedEdge& f = t.fixed[k];
+        const FixedEdge& f = edges[k];
         e[k] = f.a * x + f.b * y + f.c;
         dx[k] = f.a << c.bits;
         dy[k] = f.b << c.bits;
@@ -93,7 +93,7 @@ Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, st
     switch (t.p.path) {
         case Path::fixed:
             cov.kind = Coverage::Kind::fixed;
-            fixed_edges_at(t, c, b, s, cov.e, cov.dx, cov.dy);
+            fixed_edges_at(t.fixed, c, b, s, cov.e, cov.dx, cov.dy);
             return cov;
         case Path::wide: {
             const std::size_t samples = c.offsets.size();
@@ -193,25 +193,28 @@ struct TileBuffer {
           rows(std::min(kTile, vp.height)),
           size(static_cast<std::size_t>(samples) * rows * cols),
           z(size + kRowLanes, std::numeric_limits<double>::infinity()),
-          err(size + kRowLanes, 0.0),
           ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
-    // Empty again, as DepthRows (kernels.h) defines it: z = +infinity; err may keep its old values.
+    // Empty again, as DepthRows (kernels.h) defines it: z = +infinity.
     void clear() {
         std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
         std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
+        stored_err = 0;
         far = std::numeric_limits<double>::infinity();
         since_far = 0;
     }
-    // far := the largest z + err over the samples of pixels [0, width) x [0, height), +infinity while
-    // any is empty. Stored depths only ever come nearer, so an old far stays an upper bound.
+    // A depth with error bound err is stored: stored_err covers it from now on. One bound for the whole
+    // tile rather than one per sample: the depth test loads and stores a third less, and an error bound
+    // is a few ulps of the depths for all but near-degenerate triangles, whose large one only sends more
+    // of the tile's later comparisons to exact arithmetic.
+    void storing(double err) { stored_err = std::max(stored_err, err); }
+    // far := the largest z over the samples of pixels [0, width) x [0, height), +infinity while any is
+    // empty. Stored depths only ever come nearer, so an old far stays an upper bound.
     void refresh_far(int samples, int width, int height) {
         since_far = 0;
         double largest = -std::numeric_limits<double>::infinity();
         for (int s = 0; s < samples; ++s)
             for (int row = 0; row < height; ++row) {
-                const std::size_t from = at(s, row, 0);
-                const std::size_t n = static_cast<std::size_t>(width);
-                largest = std::max(largest, farthest(&z[from], &err[from], &ids[from], n));
+                largest = std::max(largest, farthest(&z[at(s, row, 0)], static_cast<std::size_t>(width)));
                 if (largest == std::numeric_limits<double>::infinity()) return;
             }
         far = largest;
@@ -221,8 +224,9 @@ struct TileBuffer {
     }
     int cols, rows;  // the row stride and rows per sample plane
     std::size_t size;
-    std::vector<double> z, err;
+    std::vector<double> z;
     std::vector<std::int64_t> ids;
+    double stored_err = 0;  // an error bound of every depth stored since clear()
     ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
     double far = std::numeric_limits<double>::infinity();
     std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
@@ -236,13 +240,13 @@ inline constexpr std::size_t kFarRefresh = 4;
 // [i0, i1] x [j0, j1]. Its plane's smallest value there is at a corner of the samples' rectangle (inside
 // the bounding box its error bound covers). As in the kernels' depth test, err and the stored err are
 // four times the bounds on the distance from the exact planes, which absorbs the rounding of the
-// comparison: the exact depths are then strictly ordered, and the triangle wins no sample.
-inline bool behind_tile(const Setup& t, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
-    const Plane& p = t.plane;
+// comparison, and far + stored_err rounds to no less than any stored z plus its own bound: the exact
+// depths are then strictly ordered, and the triangle wins no sample.
+inline bool behind_tile(const Plane& p, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
     const double px = p.a >= 0 ? i0 + c.ox_min : i1 + c.ox_max;
     const double py = p.b >= 0 ? j0 + c.oy_min : j1 + c.oy_max;
     const double nearest = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
-    return nearest - p.err > tile.far;
+    return nearest - p.err > tile.far + tile.stored_err;
 }
 
 // Pixels [i0, i1] x [j0, j1] of the viewport: one tile.
@@ -284,48 +288,101 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
         if (!replace) continue;
         const bool finite = std::isfinite(z);
         tile.z[slot] = finite ? z : tile.planes.depth(p.id, v, px, py);
-        tile.err[slot] = finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN;
+        tile.storing(finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN);
         tile.ids[slot] = p.id;
+    }
+}
+
+// What every path shares: triangle `id` (placed as p, its depth plane) into the tile's z-buffer over
+// pixels [i0, i1] x [j0, j1] of its bounding box, behind hierarchical z, one block per sample index.
+// depth(b, s, plane, rows, undecided) runs the z-buffer test on block b of sample index s and answers
+// whether it left samples undecided; those get the exact order.
+template <Fault F, class BlockDepth>
+void rasterize_blocks(const Placed& p, const Plane& pl, std::int32_t id, int i0, int i1, int j0, int j1,
+                      const TileRect& rect, TileBuffer& tile, const SceneView& scene, BlockDepth depth) {
+    const Context& c = scene.c;
+    if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return;
+    tile.since_far += static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size();
+    if (tile.since_far >= kFarRefresh * tile.size)
+        tile.refresh_far(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
+    tile.storing(pl.err);
+    const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, id};
+    std::uint64_t undecided[kTile];
+    for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
+        const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
+        const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
+        const DepthRows rows{tile.z.data() + at, tile.ids.data() + at, tile.cols};
+        if (!depth(b, s, plane, rows, undecided)) continue;
+        for (int r = 0; r < b.rows; ++r)
+            if (undecided[r] != 0) resolve<F>(p.v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
     }
 }
 
 // Blocks of up to this many samples are rasterized in scalar code (scalar.h).
 inline constexpr int kScalarSamples = 16;
 
-// Triangle t, named id, into the tile's z-buffer: one block per sample index.
+// The z-buffer test of block b for integer edges (edges, their steps) straight from a fixed setup,
+// without a Coverage.
+inline bool fixed_block_depth(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
+                              const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+    std::int64_t e[3], dx[3], dy[3];
+    fixed_edges_at(edges, c, b, s, e, dx, dy);
+    return depth_rows_scalar(b, [&](int r) { return fixed_row_coverage(e, dx, dy, b.width, r); }, plane, rows,
+                             undecided);
+}
+
+// Triangle t, named id, into the tile's z-buffer.
 template <Fault F>
 void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
     const Context& c = scene.c;
     const int i0 = std::max(rect.i0, t.p.i_lo), i1 = std::min(rect.i1, t.p.i_hi);
     const int j0 = std::max(rect.j0, t.p.j_lo), j1 = std::min(rect.j1, t.p.j_hi);
     const TileClass cls = classify(t, c, i0, i1, j0, j1);
-    if (cls == TileClass::reject || behind_tile(t, c, tile, i0, i1, j0, j1)) return;
-    tile.since_far += static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size();
-    if (tile.since_far >= kFarRefresh * tile.size)
-        tile.refresh_far(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
-    const DepthPlane plane{t.plane.z0, t.plane.a, t.plane.x0, t.plane.b, t.plane.y0, t.plane.err, id};
-    std::uint64_t masks[kTile], undecided[kTile];
-    for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
-        const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
-        const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
-        const DepthRows rows{tile.z.data() + at, tile.err.data() + at, tile.ids.data() + at, tile.cols};
-        const bool scalar = b.width * b.rows <= kScalarSamples;
-        bool open;
-        if (scalar && cls == TileClass::partial && t.p.path == Path::fixed) {
-            // A small triangle's block: its integer edges straight from the setup, without a Coverage.
-            std::int64_t e[3], dx[3], dy[3];
-            fixed_edges_at(t, c, b, s, e, dx, dy);
-            open = depth_rows_scalar(b, [&](int r) { return fixed_row_coverage(e, dx, dy, b.width, r); }, plane, rows,
-                                     undecided);
-        } else {
-            const Coverage cov = cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
-            open = scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
-                          : depth_block(b, cov, plane, rows, undecided);
-        }
-        if (!open) continue;
-        for (int r = 0; r < b.rows; ++r)
-            if (undecided[r] != 0) resolve<F>(t.p.v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
-    }
+    if (cls == TileClass::reject) return;
+    std::uint64_t masks[kTile];
+    rasterize_blocks<F>(t.p, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
+                        [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                            const bool scalar = b.width * b.rows <= kScalarSamples;
+                            if (scalar && cls == TileClass::partial && t.p.path == Path::fixed)
+                                return fixed_block_depth(t.fixed, c, b, s, plane, rows, undecided);
+                            const Coverage cov =
+                                cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
+                            return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
+                                          : depth_block(b, cov, plane, rows, undecided);
+                        });
+}
+
+// A small triangle of the 64-bit fixed path, straight from its binned record: its edges and plane are
+// all it needs, and a narrow one's edges fit the 32-bit lanes of depth_small.
+template <Fault F>
+void rasterize_small(const SmallFixed& t, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
+    const Context& c = scene.c;
+    const Placed p = placed_of(t, c);
+    const int i0 = std::max(rect.i0, p.i_lo), i1 = std::min(rect.i1, p.i_hi);
+    const int j0 = std::max(rect.j0, p.j_lo), j1 = std::min(rect.j1, p.j_hi);
+    const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
+    rasterize_blocks<F>(p, make_plane(p, c), t.id, i0, i1, j0, j1, rect, tile, scene,
+                        [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                            if (b.width * b.rows <= kScalarSamples)
+                                return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
+                            std::int64_t e[3], dx[3], dy[3];
+                            fixed_edges_at(edges, c, b, s, e, dx, dy);
+                            if (t.narrow) {
+                                SmallEdges narrow;
+                                for (int k = 0; k < 3; ++k) {
+                                    narrow.e[k] = static_cast<std::int32_t>(e[k]);
+                                    narrow.dx[k] = static_cast<std::int32_t>(dx[k]);
+                                    narrow.dy[k] = static_cast<std::int32_t>(dy[k]);
+                                }
+                                return depth_small(b, narrow, plane, rows, undecided);
+                            }
+                            Coverage cov;
+                            cov.kind = Coverage::Kind::fixed;
+                            std::copy_n(e, 3, cov.e);
+                            std::copy_n(dx, 3, cov.dx);
+                            std::copy_n(dy, 3, cov.dy);
+                            return depth_block(b, cov, plane, rows, undecided);
+                        });
 }
 
 inline bool is_small(const Placed& p) { return p.path != Path::wide && is_small(p.i_lo, p.i_hi, p.j_lo, p.j_hi); }
@@ -418,8 +475,7 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
             const std::int32_t next_small = a < small.size() ? small[a].id : kEnd;
             const std::int32_t next_big = b < big.size() ? big[b].id : kEnd;
             if (next_fixed < next_small && next_fixed < next_big) {
-                const SmallFixed& t = fixed[f++];
-                rasterize<F>(setup_small<F>(t, scene.c), t.id, rect, tile, scene);
+                rasterize_small<F>(fixed[f++], rect, tile, scene);
             } else if (next_small < next_big) {
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;

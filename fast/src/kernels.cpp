@@ -8,6 +8,7 @@
 #include "kernels.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <limits>
 
@@ -21,7 +22,8 @@ using DI = hn::RebindToSigned<D>;
 using MD = hn::Mask<D>;
 using VD = hn::Vec<D>;
 
-HWY_INLINE std::uint64_t mask_bits(D d, MD m) {
+template <class Tag>
+HWY_INLINE std::uint64_t mask_bits(Tag d, hn::Mask<Tag> m) {
     std::uint8_t bytes[8] = {};
     hn::StoreMaskBits(d, m, bytes);
     std::uint64_t bits = 0;
@@ -164,15 +166,35 @@ void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
     }
 }
 
+// The z-buffer test of DepthPlane on a vector of samples of one row.
+struct DepthLanes {
+    explicit DepthLanes(const DepthPlane& p)
+        : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), e(hn::Set(D(), p.err)),
+          stored_e(hn::Set(D(), p.stored_err)), id(hn::Set(DI(), p.id)) {}
+    // The lanes `mask` at px (b_dy: b (py - y0) of their row) against the stored samples at z, ids:
+    // writes the ones decided nearer, answers the ones left undecided.
+    HWY_INLINE MD test(VD px, VD b_dy, MD mask, double* z, std::int64_t* ids) const {
+        const D d;
+        const DI di;
+        const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
+        const auto stored = hn::LoadU(d, z);
+        const auto write = hn::And(mask, hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_e)));
+        const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_e));
+        hn::StoreU(hn::IfThenElse(write, depth, stored), d, z);
+        hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, ids)), di, ids);
+        return hn::AndNot(hn::Or(write, farther), mask);
+    }
+    VD z0, a, x0, e, stored_e;
+    hn::Vec<DI> id;
+};
+
 // A sample row meets the triangle in one run of samples: along the row each edge's value is monotone
 // (exact, or correctly rounded operations on a monotone px), so its inside is a half-line.
 template <class Evaluator>
 bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
-    const DI di;
     const int lanes = static_cast<int>(hn::Lanes(d));
-    const auto z0 = hn::Set(d, p.z0), a = hn::Set(d, p.a), x0 = hn::Set(d, p.x0), e = hn::Set(d, p.err);
-    const auto id = hn::Set(di, p.id);
+    const DepthLanes lanes_test(p);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
     const auto px_end = hn::Set(d, double(b.i0 + b.width) + b.sx);  // as in CoverageLoop
     // py = j + sy, exact as px is; b (py - y0) is the scalar definition's, lane by lane.
@@ -182,9 +204,7 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     for (int r = 0; r < b.rows; ++r, py = hn::Add(py, down)) {
         ev.start_row(r);
         const auto b_dy = hn::Mul(pb, hn::Sub(py, y0));
-        double* z = rows.z + r * rows.stride;
-        double* err = rows.err + r * rows.stride;
-        std::int64_t* ids = rows.ids + r * rows.stride;
+        const std::ptrdiff_t row = r * rows.stride;
         std::uint64_t open_bits = 0;
         bool seen = false;
         auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
@@ -195,14 +215,66 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
                 continue;
             }
             seen = true;
-            const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
-            const auto stored = hn::LoadU(d, z + k), stored_err = hn::LoadU(d, err + k);
-            const auto write = hn::And(mask, hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err)));
-            const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_err));
-            hn::StoreU(hn::IfThenElse(write, depth, stored), d, z + k);
-            hn::StoreU(hn::IfThenElse(write, e, stored_err), d, err + k);
-            hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, ids + k)), di, ids + k);
-            const auto open = hn::AndNot(hn::Or(write, farther), mask);
+            const auto open = lanes_test.test(px, b_dy, mask, rows.z + row + k, rows.ids + row + k);
+            if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
+        }
+        undecided[r] = open_bits;
+        any |= open_bits;
+    }
+    return any != 0;
+}
+
+bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
+                std::uint64_t* undecided) {
+    // First each row's covered run, with all three edges in the registers.
+    std::uint64_t covered[kRowLanes];
+    {
+        const hn::ScalableTag<std::int32_t> di;
+        const int lanes32 = static_cast<int>(hn::Lanes(di));
+        hn::Vec<decltype(di)> row[3], step[3], down[3];
+        for (int e = 0; e < 3; ++e) {
+            row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
+            step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, lanes32));
+            down[e] = hn::Set(di, edges.dy[e]);
+        }
+        // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
+        // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
+        const std::uint64_t in_block = b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
+        for (int r = 0; r < b.rows; ++r) {
+            std::uint64_t bits = 0;
+            auto v0 = row[0], v1 = row[1], v2 = row[2];
+            for (int k = 0; k < b.width; k += lanes32) {
+                // All three are >= 0 exactly when their bitwise or is > -1.
+                bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
+                v0 = hn::Add(v0, step[0]);
+                v1 = hn::Add(v1, step[1]);
+                v2 = hn::Add(v2, step[2]);
+            }
+            for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
+            covered[r] = bits & in_block;
+        }
+    }
+    // Then the depth test on each run: lanes whose px lies between those of its first and last sample.
+    const D d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const DepthLanes lanes_test(p);
+    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
+    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0);
+    std::uint64_t any = 0;
+    for (int r = 0; r < b.rows; ++r) {
+        undecided[r] = 0;
+        if (covered[r] == 0) continue;
+        const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, double(b.j0 + r) + b.sy), y0));  // as in DepthLoop
+        const int first = std::countr_zero(covered[r]), last = 63 - std::countl_zero(covered[r]);
+        const auto px_first = hn::Set(d, double(b.i0 + first) + b.sx), px_last = hn::Set(d, double(b.i0 + last) + b.sx);
+        const int from = first / lanes * lanes;
+        double* z = rows.z + r * rows.stride;
+        std::int64_t* ids = rows.ids + r * rows.stride;
+        std::uint64_t open_bits = 0;
+        auto px = hn::Add(hn::Set(d, double(b.i0 + from) + b.sx), ramp);
+        for (int k = from; k <= last; k += lanes, px = hn::Add(px, advance)) {
+            const auto mask = hn::And(hn::Ge(px, px_first), hn::Le(px, px_last));
+            const auto open = lanes_test.test(px, b_dy, mask, z + k, ids + k);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
         undecided[r] = open_bits;
@@ -246,23 +318,14 @@ bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, DepthRow
     return with_evaluator(b, c, [&](auto& ev) { return DepthLoop(b, ev, p, rows, undecided); });
 }
 
-double Farthest(const double* z, const double* err, const std::int64_t* ids, std::size_t n) {
+double Farthest(const double* z, std::size_t n) {
     const D d;
-    const DI di;
     const std::size_t lanes = hn::Lanes(d);
-    const auto none = hn::Zero(di);
     auto largest = hn::Set(d, -std::numeric_limits<double>::infinity());
     std::size_t k = 0;
-    for (; k + lanes <= n; k += lanes) {
-        if (!hn::AllFalse(di, hn::Lt(hn::LoadU(di, ids + k), none))) return std::numeric_limits<double>::infinity();
-        const auto bound = hn::Add(hn::LoadU(d, z + k), hn::LoadU(d, err + k));
-        largest = hn::IfThenElse(hn::Gt(bound, largest), bound, largest);
-    }
+    for (; k + lanes <= n; k += lanes) largest = hn::Max(largest, hn::LoadU(d, z + k));
     double result = hn::GetLane(hn::MaxOfLanes(d, largest));
-    for (; k < n; ++k) {
-        if (ids[k] < 0) return std::numeric_limits<double>::infinity();
-        result = std::max(result, z[k] + err[k]);
-    }
+    for (; k < n; ++k) result = std::max(result, z[k]);
     return result;
 }
 
@@ -274,6 +337,7 @@ namespace rast::fast::detail {
 
 HWY_EXPORT(CoverageBlock);
 HWY_EXPORT(DepthBlock);
+HWY_EXPORT(DepthSmall);
 HWY_EXPORT(Farthest);
 
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered) {
@@ -285,8 +349,13 @@ bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane&
     return HWY_DYNAMIC_DISPATCH(DepthBlock)(block, coverage, plane, rows, undecided);
 }
 
-double farthest(const double* z, const double* err, const std::int64_t* ids, std::size_t n) {
-    return HWY_DYNAMIC_DISPATCH(Farthest)(z, err, ids, n);
+bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,
+                 std::uint64_t* undecided) {
+    return HWY_DYNAMIC_DISPATCH(DepthSmall)(block, edges, plane, rows, undecided);
+}
+
+double farthest(const double* z, std::size_t n) {
+    return HWY_DYNAMIC_DISPATCH(Farthest)(z, n);
 }
 
 }  // namespace rast::fast::detail

@@ -36,35 +36,47 @@ struct Coverage {
     bool inclusive[3]{};
 };
 
-// The z-buffer test of one triangle: z = z0 + (a * (px - x0) + b * (py - y0)), error bound err.
+// The z-buffer test of one triangle: z = z0 + (a * (px - x0) + b * (py - y0)), error bound err; every
+// depth stored where it is tested has an error bound of at most stored_err (the tile's largest so far).
+// Rounding is monotone, so a test against stored_err decided nearer or farther is also decided so against
+// the stored depth's own bound, the test the error analysis proves (Plane, setup.h).
 struct DepthPlane {
-    double z0, a, x0, b, y0, err;
+    double z0, a, x0, b, y0, err, stored_err;
     std::int64_t id;
 };
 
 // A tile's z-buffer at the block's first sample, rows `stride` apart. The kernel reads and rewrites (with
 // their own values) up to a vector past the end of a row: the buffers need that much padding. An empty
-// slot (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it, and any err:
-// a finite one leaves z - err infinite, an infinite one makes it NaN, which decides nothing.
+// slot (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while
+// stored_err is finite (an infinite one makes z - stored_err NaN, which decides nothing).
 struct DepthRows {
     double* z;
-    double* err;
     std::int64_t* ids;
     std::ptrdiff_t stride;
+};
+
+// The integer edge functions of Coverage::Kind::fixed, for a triangle whose values at every sample of
+// the block fit in 32 bits: E at (i0, j0), and its steps per column and per row.
+struct SmallEdges {
+    std::int32_t e[3], dx[3], dy[3];
 };
 
 // covered[r]: the covered samples of row r.
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
 
-// For every covered sample: written (z, err, id) when z + err < z' - err' (decided nearer); left when
-// z - err > z' + err' (decided farther). undecided[r] gets the rest of row r, for the exact comparison;
+// For every covered sample: written (z, id) when z + err < z' - stored_err (decided nearer); left when
+// z - err > z' + stored_err (decided farther). undecided[r] gets the rest of row r, for the exact comparison;
 // returns whether there are any.
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 
-// The largest z[k] + err[k] for k < n, or +infinity when any slot is empty (ids[k] < 0). The maximum
-// is exact, so the order the lanes take does not matter. A NaN (z = -infinity, err = +infinity: a
-// depth below -DBL_MAX) raises nothing.
-double farthest(const double* z, const double* err, const std::int64_t* ids, std::size_t n);
+// depth_block for integer edges that fit in 32 bits: each row's covered run is found first, in lanes of
+// 32 bits (twice as many per vector as the depth test's), and the depth test runs on that run alone.
+bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,
+                 std::uint64_t* undecided);
+
+// The largest z[k] for k < n (+infinity when any slot is empty). The maximum is exact, so the order the
+// lanes take does not matter.
+double farthest(const double* z, std::size_t n);
 
 }  // namespace rast::fast::detail

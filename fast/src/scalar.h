@@ -66,12 +66,11 @@ bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, De
             const double px = double(b.i0 + k) + b.sx;
             const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
             const std::ptrdiff_t at = r * rows.stride + k;
-            const double stored = rows.z[at], stored_err = rows.err[at];
-            if (z + p.err < stored - stored_err) {
+            const double stored = rows.z[at];
+            if (z + p.err < stored - p.stored_err) {
                 rows.z[at] = z;
-                rows.err[at] = p.err;
                 rows.ids[at] = p.id;
-            } else if (!(z - p.err > stored + stored_err)) {
+            } else if (!(z - p.err > stored + p.stored_err)) {
                 open |= std::uint64_t{1} << k;
             }
         }

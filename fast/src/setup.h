@@ -220,7 +220,16 @@ struct SmallFixed {
     std::int32_t x[3], y[3];  // |.| <= 2^29
     std::int32_t i_lo, i_hi, j_lo, j_hi;
     std::int32_t id;
+    bool narrow;  // its edge functions fit in 32 bits at every sample of its bounding box (narrow_edges)
 };
+
+// Whether the edge functions of a triangle whose corners span at most w grid units (scale of them to
+// the pixel) each way fit in 32 bits at every sample of its bounding box. Such a sample lies within
+// w + scale of each corner along each axis (the sample offsets are within the pixel), and an edge's
+// coefficients are coordinate differences, so |E| <= 2 w (w + scale) + 1 (the tie bias).
+inline bool narrow_edges(std::int64_t w, std::int64_t scale) {
+    return 2 * w * (w + scale) + 1 < (std::int64_t{1} << 31);  // w, scale <= 2^30: no overflow
+}
 
 enum class Lane { culled, small_fixed, general };
 
@@ -253,6 +262,7 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
         !pixel_range<F>(ymin, ymax, c.sy_min, c.sy_max, c.bits, c.vp.height, out.j_lo, out.j_hi))
         return Lane::culled;
     if (!is_small(out.i_lo, out.i_hi, out.j_lo, out.j_hi)) return Lane::general;
+    out.narrow = narrow_edges(std::max(xmax - xmin, ymax - ymin), std::int64_t{1} << c.bits);
     for (int k = 0; k < 3; ++k) {
         out.x[k] = static_cast<std::int32_t>(x[k]);
         out.y[k] = static_cast<std::int32_t>(y[k]);
@@ -323,17 +333,6 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
             break;
     }
     s.plane = make_plane(placed, c);
-    return s;
-}
-
-// setup_triangle of what `t` records, its edges straight from its integers.
-template <Fault F>
-Setup setup_small(const SmallFixed& t, const Context& c) {
-    Setup s;
-    s.p = placed_of(t, c);
-    s.classify_tiles = false;
-    s.fixed = fixed_edges<F>(t.x, t.y);
-    s.plane = make_plane(s.p, c);
     return s;
 }
 

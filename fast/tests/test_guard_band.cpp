@@ -11,6 +11,7 @@ namespace rast::fast {
 namespace {
 
 using testing::covered_pixels;
+using testing::rendered_pixels;
 using testing::Pixels;
 using testing::tri;
 
@@ -96,6 +97,17 @@ TEST(GuardBandFixed, BothSidesOfEachRange) {
             for (const double r : {limit / 2, limit, 2 * limit})
                 EXPECT_EQ(covered_pixels(tri(2.5, -r, r, 0, 2.5, r), vp, p), columns_from(2, vp)) << r;
     }
+}
+
+// A scene's triangle whose box in the viewport is small takes the compact small-triangle path, where
+// edge functions are stepped in 32 bits when they fit at every sample of the triangle's own box (the
+// triangle spans less than about 128 pixels at fixed8, 2048 at fixed4). Half-widths on both sides of
+// each bound, and far beyond it, where 32 bits would wrap around.
+TEST(GuardBandFixed, SmallBoxOfALargeTriangleOnBothSidesOf32BitEdges) {
+    const Viewport vp{16, 8};
+    for (Precision p : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+        for (const double r : {60.0, 70.0, 1000.0, 1100.0, 0x1p20})
+            EXPECT_EQ(rendered_pixels(tri(2.5, -r, r, 0, 2.5, r), vp, p), columns_from(2, vp)) << name(p) << " " << r;
 }
 
 }  // namespace
