@@ -254,26 +254,31 @@ bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, De
             covered[r] = bits & in_block;
         }
     }
-    // Then the depth test on each run: lanes whose px lies between those of its first and last sample.
+    // Then the depth test on each run. py and px = i + sx are stepped exactly (sums of integers below
+    // 2^25 and multiples of 1/16), so they are the values DepthLoop computes.
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes lanes_test(p);
-    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
-    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0);
+    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0), one = hn::Set(d, 1.0);
+    const auto px_start = hn::Add(hn::Set(d, double(b.i0) + b.sx), hn::Iota(d, 0.0));
+    const auto column = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
+    auto py = hn::Set(d, double(b.j0) + b.sy);
     std::uint64_t any = 0;
-    for (int r = 0; r < b.rows; ++r) {
+    for (int r = 0; r < b.rows; ++r, py = hn::Add(py, one)) {
         undecided[r] = 0;
         if (covered[r] == 0) continue;
-        const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, double(b.j0 + r) + b.sy), y0));  // as in DepthLoop
+        const auto b_dy = hn::Mul(pb, hn::Sub(py, y0));
+        // The run is the columns [first, last]; a lane takes part when its column lies within.
         const int first = std::countr_zero(covered[r]), last = 63 - std::countl_zero(covered[r]);
-        const auto px_first = hn::Set(d, double(b.i0 + first) + b.sx), px_last = hn::Set(d, double(b.i0 + last) + b.sx);
         const int from = first / lanes * lanes;
+        const auto first_column = hn::Set(d, double(first)), last_column = hn::Set(d, double(last));
+        auto k_column = hn::Add(column, hn::Set(d, double(from)));
+        auto px = hn::Add(px_start, hn::Set(d, double(from)));
         double* z = rows.z + r * rows.stride;
         std::int64_t* ids = rows.ids + r * rows.stride;
         std::uint64_t open_bits = 0;
-        auto px = hn::Add(hn::Set(d, double(b.i0 + from) + b.sx), ramp);
-        for (int k = from; k <= last; k += lanes, px = hn::Add(px, advance)) {
-            const auto mask = hn::And(hn::Ge(px, px_first), hn::Le(px, px_last));
+        for (int k = from; k <= last; k += lanes, px = hn::Add(px, advance), k_column = hn::Add(k_column, advance)) {
+            const auto mask = hn::And(hn::Ge(k_column, first_column), hn::Le(k_column, last_column));
             const auto open = lanes_test.test(px, b_dy, mask, z + k, ids + k);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
