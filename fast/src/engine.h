@@ -85,6 +85,19 @@ inline void fixed_edges_at(const std::array<FixedEdge, 3>& edges, const Context&
     }
 }
 
+// masks[r]: the samples of row r of block b (sample index s) inside the integer edges, each row's run
+// walked from the previous one's (spans.h) rather than found by evaluating the edges along the row.
+inline void fixed_row_masks(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
+                            std::uint64_t* masks) {
+    std::int64_t e[3], dx[3], dy[3];
+    fixed_edges_at(edges, c, b, s, e, dx, dy);
+    RowSpans<std::int64_t> walk(dx, e, dy, 0, b.width - 1);
+    for (int r = 0; r < b.rows; ++r) {
+        const Span span = walk.next();
+        masks[r] = span_bits(span.lo, span.hi, 0);
+    }
+}
+
 // How the kernels find the samples of block b (sample index s) that t covers; the paths that compute
 // row masks here leave them in `masks`, one per row of the block.
 template <Fault F>
@@ -343,10 +356,17 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     rasterize_blocks<F>(t.p, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             const bool scalar = b.width * b.rows <= kScalarSamples;
-                            if (scalar && cls == TileClass::partial && t.p.path == Path::fixed)
+                            const bool partial = cls == TileClass::partial;
+                            if (partial && t.p.path == Path::fixed && scalar)
                                 return fixed_block_depth(t.fixed, c, b, s, plane, rows, undecided);
-                            const Coverage cov =
-                                cls == TileClass::accept ? Coverage{} : coverage_of<F>(t, c, b, s, masks);
+                            if (partial && t.p.path != Path::floating && !scalar) {
+                                // Exact rows, one run each: the fixed path's walked from row to row, the
+                                // wide path's from its spans.
+                                if (t.p.path == Path::fixed) fixed_row_masks(t.fixed, c, b, s, masks);
+                                else coverage_of<F>(t, c, b, s, masks);
+                                return depth_runs(b, masks, plane, rows, undecided);
+                            }
+                            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, masks) : Coverage{};
                             return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
                                           : depth_block(b, cov, plane, rows, undecided);
                         });
@@ -365,23 +385,20 @@ void rasterize_small(const SmallFixed& t, const TileRect& rect, TileBuffer& tile
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
                                 return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
+                            if (!t.narrow) {
+                                std::uint64_t masks[kTile];
+                                fixed_row_masks(edges, c, b, s, masks);
+                                return depth_runs(b, masks, plane, rows, undecided);
+                            }
                             std::int64_t e[3], dx[3], dy[3];
                             fixed_edges_at(edges, c, b, s, e, dx, dy);
-                            if (t.narrow) {
-                                SmallEdges narrow;
-                                for (int k = 0; k < 3; ++k) {
-                                    narrow.e[k] = static_cast<std::int32_t>(e[k]);
-                                    narrow.dx[k] = static_cast<std::int32_t>(dx[k]);
-                                    narrow.dy[k] = static_cast<std::int32_t>(dy[k]);
-                                }
-                                return depth_small(b, narrow, plane, rows, undecided);
+                            SmallEdges narrow;
+                            for (int k = 0; k < 3; ++k) {
+                                narrow.e[k] = static_cast<std::int32_t>(e[k]);
+                                narrow.dx[k] = static_cast<std::int32_t>(dx[k]);
+                                narrow.dy[k] = static_cast<std::int32_t>(dy[k]);
                             }
-                            Coverage cov;
-                            cov.kind = Coverage::Kind::fixed;
-                            std::copy_n(e, 3, cov.e);
-                            std::copy_n(dx, 3, cov.dx);
-                            std::copy_n(dy, 3, cov.dy);
-                            return depth_block(b, cov, plane, rows, undecided);
+                            return depth_small(b, narrow, plane, rows, undecided);
                         });
 }
 

@@ -122,54 +122,13 @@ cpp_int scaled(double x, int bits) {
     return d.m / (cpp_int(1) << static_cast<unsigned>(-shift));  // exact: the low bits are zero on the grid
 }
 
-// floor(a / b) for b > 0. (No ++ or -- on cpp_int anywhere: Boost 1.74's ++ turns -(2^64 k + 1) into
-// +(2^64 k), for k >= 1; += 1 and -= 1 are right.)
-template <class Int>
-Int floor_div(const Int& a, const Int& b) {
-    Int q = a / b;
-    if (a < 0 && q * b != a) q -= 1;
-    return q;
-}
-
-// v clamped to [lo - 1, hi + 1]: one past either end already means "no pixel on this side".
-template <class Int>
-int clamp_to(const Int& v, int lo, int hi) {
-    if (v < lo) return lo - 1;
-    if (v > hi) return hi + 1;
-    return static_cast<int>(v);
-}
-
-// floor(Q / d) from row to row while Q grows by `step` per row (d > 0): two divisions at the start, then
-// additions only, as an exact digital differential analyzer.
-template <class Int>
-class RowQuotient {
-public:
-    RowQuotient(const Int& q, const Int& step, const Int& d)
-        : d_(d), quotient_(floor_div(q, d)), remainder_(q - quotient_ * d), step_quotient_(floor_div(step, d)),
-          step_remainder_(step - step_quotient_ * d) {}
-    const Int& value() const { return quotient_; }
-    void next_row() {
-        quotient_ += step_quotient_;
-        remainder_ += step_remainder_;
-        if (remainder_ >= d_) {
-            remainder_ -= d_;
-            quotient_ += 1;  // not ++: see floor_div
-        }
-    }
-
-private:
-    Int d_, quotient_, remainder_;  // remainder = Q - quotient d, in [0, d)
-    Int step_quotient_, step_remainder_;
-};
-
 // The covered spans in integers of type Int; scale(x) is x · 2^bits as an Int.
 template <class Int, class Scale>
 std::vector<Span> solve_spans(Scale scale, const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                               std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi) {
     // Edge a -> b in fixed units: E(X, Y) = A X + B Y + C, A = ay - by, B = bx - ax. Along a sample
-    // row X = i·2^bits + SX, so E is P·i + Q with P = A·2^bits, and the covered pixels are one half-line
-    // per edge: i >= -floor(Q / P) for P > 0, i <= floor(Q / -P) for P < 0, all or none (Q >= 0) for
-    // P = 0. From one sample row to the next Q grows by B·2^bits.
+    // row X = i·2^bits + SX, so E is P·i + Q with P = A·2^bits, and from one sample row to the next Q
+    // grows by B·2^bits: RowSpans walks the rows.
     struct Edge {
         Int a, b, c;
     };
@@ -190,30 +149,15 @@ std::vector<Span> solve_spans(Scale scale, const Corners& v, int bits, const std
     for (std::size_t s = 0; s < samples; ++s) {
         const Int sx = scale(offsets[s].x);
         const Int y = Int(j_lo) * unit + scale(offsets[s].y);
-        std::array<int, 3> sign;
-        std::vector<RowQuotient<Int>> rows;
-        rows.reserve(3);
+        std::array<Int, 3> p, q, step;
         for (int k = 0; k < 3; ++k) {
             const Edge& e = edges[k];
-            const Int p = e.a * unit;
-            sign[k] = p > 0 ? 1 : p < 0 ? -1 : 0;
-            rows.emplace_back(e.a * sx + e.b * y + e.c, e.b * unit, sign[k] == 0 ? Int(1) : sign[k] > 0 ? p : Int(-p));
+            p[k] = e.a * unit;
+            q[k] = e.a * sx + e.b * y + e.c;
+            step[k] = e.b * unit;
         }
-        for (int j = j_lo; j <= j_hi; ++j) {
-            int lo = i_lo, hi = i_hi;
-            for (int k = 0; k < 3; ++k) {
-                const Int& f = rows[k].value();
-                if (sign[k] == 0) {
-                    if (f < 0) hi = lo - 1;
-                } else if (sign[k] > 0) {
-                    lo = std::max(lo, clamp_to(Int(-f), i_lo, i_hi));
-                } else {
-                    hi = std::min(hi, clamp_to(f, i_lo, i_hi));
-                }
-                rows[k].next_row();
-            }
-            spans[static_cast<std::size_t>(j - j_lo) * samples + s] = {lo, hi};
-        }
+        RowSpans<Int> walk(p.data(), q.data(), step.data(), i_lo, i_hi);
+        for (int j = j_lo; j <= j_hi; ++j) spans[static_cast<std::size_t>(j - j_lo) * samples + s] = walk.next();
     }
     return spans;
 }

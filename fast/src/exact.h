@@ -3,6 +3,8 @@
 // spans of a triangle beyond the 64-bit fixed-point range (the wide path).
 #pragma once
 
+#include "spans.h"
+
 #include <rast/scene.h>
 
 #include <array>
@@ -37,11 +39,6 @@ public:
 private:
     struct Cache;
     std::unique_ptr<Cache> cache_;  // created at the first exact comparison
-};
-
-// A run of covered pixels [lo, hi] in one sample row; empty when lo > hi.
-struct Span {
-    int lo, hi;
 };
 
 // For a counter-clockwise triangle whose coordinates are multiples of 2^-bits: for each pixel row j in

@@ -224,38 +224,11 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     return any != 0;
 }
 
-bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
-                std::uint64_t* undecided) {
-    // First each row's covered run, with all three edges in the registers.
-    std::uint64_t covered[kRowLanes];
-    {
-        const hn::ScalableTag<std::int32_t> di;
-        const int lanes32 = static_cast<int>(hn::Lanes(di));
-        hn::Vec<decltype(di)> row[3], step[3], down[3];
-        for (int e = 0; e < 3; ++e) {
-            row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
-            step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, lanes32));
-            down[e] = hn::Set(di, edges.dy[e]);
-        }
-        // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
-        // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
-        const std::uint64_t in_block = b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
-        for (int r = 0; r < b.rows; ++r) {
-            std::uint64_t bits = 0;
-            auto v0 = row[0], v1 = row[1], v2 = row[2];
-            for (int k = 0; k < b.width; k += lanes32) {
-                // All three are >= 0 exactly when their bitwise or is > -1.
-                bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
-                v0 = hn::Add(v0, step[0]);
-                v1 = hn::Add(v1, step[1]);
-                v2 = hn::Add(v2, step[2]);
-            }
-            for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
-            covered[r] = bits & in_block;
-        }
-    }
-    // Then the depth test on each run. py and px = i + sx are stepped exactly (sums of integers below
-    // 2^25 and multiples of 1/16), so they are the values DepthLoop computes.
+// The depth test on the covered samples of each row, one run per row (covered[r]: its bits). py and
+// px = i + sx are stepped exactly (sums of integers below 2^25 and multiples of 1/16), so they are the
+// values DepthLoop computes.
+HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+                            std::uint64_t* undecided) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes lanes_test(p);
@@ -286,6 +259,44 @@ bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, De
         any |= open_bits;
     }
     return any != 0;
+}
+
+bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+               std::uint64_t* undecided) {
+    return DepthOnRuns(b, covered, p, rows, undecided);
+}
+
+bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
+                std::uint64_t* undecided) {
+    // First each row's covered run, with all three edges in the registers.
+    std::uint64_t covered[kRowLanes];
+    {
+        const hn::ScalableTag<std::int32_t> di;
+        const int lanes32 = static_cast<int>(hn::Lanes(di));
+        hn::Vec<decltype(di)> row[3], step[3], down[3];
+        for (int e = 0; e < 3; ++e) {
+            row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
+            step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, lanes32));
+            down[e] = hn::Set(di, edges.dy[e]);
+        }
+        // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
+        // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
+        const std::uint64_t in_block = b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
+        for (int r = 0; r < b.rows; ++r) {
+            std::uint64_t bits = 0;
+            auto v0 = row[0], v1 = row[1], v2 = row[2];
+            for (int k = 0; k < b.width; k += lanes32) {
+                // All three are >= 0 exactly when their bitwise or is > -1.
+                bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
+                v0 = hn::Add(v0, step[0]);
+                v1 = hn::Add(v1, step[1]);
+                v2 = hn::Add(v2, step[2]);
+            }
+            for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
+            covered[r] = bits & in_block;
+        }
+    }
+    return DepthOnRuns(b, covered, p, rows, undecided);
 }
 
 // Instantiates `loop` with the evaluator for the coverage's kind.
@@ -342,6 +353,7 @@ namespace rast::fast::detail {
 
 HWY_EXPORT(CoverageBlock);
 HWY_EXPORT(DepthBlock);
+HWY_EXPORT(DepthRuns);
 HWY_EXPORT(DepthSmall);
 HWY_EXPORT(Farthest);
 
@@ -352,6 +364,11 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided) {
     return HWY_DYNAMIC_DISPATCH(DepthBlock)(block, coverage, plane, rows, undecided);
+}
+
+bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPlane& plane, DepthRows rows,
+                std::uint64_t* undecided) {
+    return HWY_DYNAMIC_DISPATCH(DepthRuns)(block, covered, plane, rows, undecided);
 }
 
 bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,

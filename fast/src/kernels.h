@@ -70,8 +70,13 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 
-// depth_block for integer edges that fit in 32 bits: each row's covered run is found first, in lanes of
-// 32 bits (twice as many per vector as the depth test's), and the depth test runs on that run alone.
+// depth_block for rows whose covered samples form one run each, given as bits (covered[r]): the depth
+// test runs on that run alone.
+bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPlane& plane, DepthRows rows,
+                std::uint64_t* undecided);
+
+// depth_runs for integer edges that fit in 32 bits, each row's run found first in lanes of 32 bits
+// (twice as many per vector as the depth test's).
 bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 
