@@ -97,8 +97,11 @@ void register_benchmarks() {
         {.shape = Shape::small, .triangles = 100'000},
         {.shape = Shape::small, .triangles = 100'000, .on_grid_256 = true},
         {.shape = Shape::small, .triangles = 100'000, .depth = Depth::separated},  // rast bench's small scene
+        {.shape = Shape::small, .triangles = 1'000'000},
         {.shape = Shape::medium, .triangles = 10'000},
         {.shape = Shape::medium, .triangles = 10'000, .depth = Depth::separated},  // rast bench's medium scene
+        {.shape = Shape::medium, .triangles = 100'000},
+        // Large triangles stop at 10^4: each frame is already 10^8 covered samples.
         {.shape = Shape::large, .triangles = 10'000},
         // rast bench's large scene: depth complexity 10 rather than 100, so hierarchical z culls little.
         {.shape = Shape::large, .triangles = 1'000, .depth = Depth::separated},
