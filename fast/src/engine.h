@@ -206,20 +206,40 @@ struct TileBuffer {
           rows(std::min(kTile, vp.height)),
           size(static_cast<std::size_t>(samples) * rows * cols),
           z(size + kRowLanes, std::numeric_limits<double>::infinity()),
+          err(size + kRowLanes, 0.0),
           ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
-    // Empty again, as DepthRows (kernels.h) defines it: z = +infinity.
+    // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
     void clear() {
         std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
         std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
         stored_err = 0;
+        per_sample = false;
         far = std::numeric_limits<double>::infinity();
         since_far = 0;
     }
-    // A depth with error bound err is stored: stored_err covers it from now on. One bound for the whole
-    // tile rather than one per sample: the depth test loads and stores a third less, and an error bound
-    // is a few ulps of the depths for all but near-degenerate triangles, whose large one only sends more
-    // of the tile's later comparisons to exact arithmetic.
-    void storing(double err) { stored_err = std::max(stored_err, err); }
+    // A triangle whose depths have error bound e is about to be composed. The tile keeps one bound for
+    // all its stored depths while they are of one order (the depth test then loads and stores a third
+    // less). A bound far above the tile's (a near-degenerate triangle, or depths of a larger magnitude)
+    // would make later comparisons exact, and one far below it would be compared with a bound too coarse
+    // for it: from the first such triangle on, the tile keeps a bound per sample, the ones stored before
+    // with the tile's. An infinite bound decides nothing: such a triangle's depths are all stored by
+    // the exact comparison, each with its own bound (stored()).
+    void admit(double e) {
+        constexpr double kSpread = 0x1p20;
+        if (!per_sample && stored_err > 0 && !(e <= kSpread * stored_err && stored_err <= kSpread * e)) {
+            for (std::size_t k = 0; k < size; ++k) err[k] = ids[k] < 0 ? 0 : stored_err;
+            per_sample = true;
+        }
+        if (e < std::numeric_limits<double>::infinity()) storing(e);
+    }
+    // A depth with error bound e is stored at `slot`.
+    void stored(std::size_t slot, double e) {
+        if (per_sample) err[slot] = e;
+        storing(e);
+    }
+    DepthRows rows_at(std::size_t at) {
+        return {z.data() + at, per_sample ? err.data() + at : nullptr, ids.data() + at, cols};
+    }
     // far := the largest z over the samples of pixels [0, width) x [0, height), +infinity while any is
     // empty. Stored depths only ever come nearer, so an old far stays an upper bound.
     void refresh_far(int samples, int width, int height) {
@@ -237,12 +257,16 @@ struct TileBuffer {
     }
     int cols, rows;  // the row stride and rows per sample plane
     std::size_t size;
-    std::vector<double> z;
+    std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample
     std::vector<std::int64_t> ids;
     double stored_err = 0;  // an error bound of every depth stored since clear()
+    bool per_sample = false;
     ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
     double far = std::numeric_limits<double>::infinity();
     std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
+
+private:
+    void storing(double e) { stored_err = std::max(stored_err, e); }
 };
 
 // A tile's far depth is brought up to date once blocks of this many times its samples were rasterized
@@ -301,7 +325,7 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
         if (!replace) continue;
         const bool finite = std::isfinite(z);
         tile.z[slot] = finite ? z : tile.planes.depth(p.id, v, px, py);
-        tile.storing(finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN);
+        tile.stored(slot, finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN);
         tile.ids[slot] = p.id;
     }
 }
@@ -318,13 +342,13 @@ void rasterize_blocks(const Placed& p, const Plane& pl, std::int32_t id, int i0,
     tile.since_far += static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size();
     if (tile.since_far >= kFarRefresh * tile.size)
         tile.refresh_far(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
-    tile.storing(pl.err);
+    tile.admit(pl.err);
     const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, id};
     std::uint64_t undecided[kTile];
     for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
         const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
         const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
-        const DepthRows rows{tile.z.data() + at, tile.ids.data() + at, tile.cols};
+        const DepthRows rows = tile.rows_at(at);
         if (!depth(b, s, plane, rows, undecided)) continue;
         for (int r = 0; r < b.rows; ++r)
             if (undecided[r] != 0) resolve<F>(p.v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);

@@ -166,22 +166,36 @@ void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
     }
 }
 
-// The z-buffer test of DepthPlane on a vector of samples of one row.
+// The z-buffer test of DepthPlane on a vector of samples of one row. kPerSample: the stored depths'
+// error bounds are DepthRows::err's, read and written with them; otherwise DepthPlane::stored_err.
+template <bool kPerSample>
 struct DepthLanes {
     explicit DepthLanes(const DepthPlane& p)
         : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), e(hn::Set(D(), p.err)),
           stored_e(hn::Set(D(), p.stored_err)), id(hn::Set(DI(), p.id)) {}
-    // The lanes `mask` at px (b_dy: b (py - y0) of their row) against the stored samples at z, ids:
-    // writes the ones decided nearer, answers the ones left undecided.
-    HWY_INLINE MD test(VD px, VD b_dy, MD mask, double* z, std::int64_t* ids) const {
+    // The row at offset `row` of the rows: z, its bounds (read only when kPerSample) and ids.
+    struct Row {
+        double *z, *err;
+        std::int64_t* ids;
+    };
+    static Row row_of(DepthRows rows, std::ptrdiff_t row) {
+        double* z = rows.z + row;
+        return {z, kPerSample ? rows.err + row : z, rows.ids + row};  // err: any valid pointer when unused
+    }
+    // The lanes `mask` at px (b_dy: b (py - y0) of their row) against the stored samples from column k
+    // of the row: writes the ones decided nearer, answers the ones left undecided.
+    HWY_INLINE MD test(VD px, VD b_dy, MD mask, Row row, int k) const {
         const D d;
         const DI di;
         const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
-        const auto stored = hn::LoadU(d, z);
-        const auto write = hn::And(mask, hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_e)));
-        const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_e));
-        hn::StoreU(hn::IfThenElse(write, depth, stored), d, z);
-        hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, ids)), di, ids);
+        const auto stored = hn::LoadU(d, row.z + k);
+        VD stored_err = stored_e;
+        if constexpr (kPerSample) stored_err = hn::LoadU(d, row.err + k);
+        const auto write = hn::And(mask, hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err)));
+        const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_err));
+        hn::StoreU(hn::IfThenElse(write, depth, stored), d, row.z + k);
+        if constexpr (kPerSample) hn::StoreU(hn::IfThenElse(write, e, stored_err), d, row.err + k);
+        hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, row.ids + k)), di, row.ids + k);
         return hn::AndNot(hn::Or(write, farther), mask);
     }
     VD z0, a, x0, e, stored_e;
@@ -190,11 +204,11 @@ struct DepthLanes {
 
 // A sample row meets the triangle in one run of samples: along the row each edge's value is monotone
 // (exact, or correctly rounded operations on a monotone px), so its inside is a half-line.
-template <class Evaluator>
+template <bool kPerSample, class Evaluator>
 bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
-    const DepthLanes lanes_test(p);
+    const DepthLanes<kPerSample> lanes_test(p);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
     const auto px_end = hn::Set(d, double(b.i0 + b.width) + b.sx);  // as in CoverageLoop
     // py = j + sy, exact as px is; b (py - y0) is the scalar definition's, lane by lane.
@@ -204,7 +218,7 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     for (int r = 0; r < b.rows; ++r, py = hn::Add(py, down)) {
         ev.start_row(r);
         const auto b_dy = hn::Mul(pb, hn::Sub(py, y0));
-        const std::ptrdiff_t row = r * rows.stride;
+        const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         std::uint64_t open_bits = 0;
         bool seen = false;
         auto px = hn::Add(hn::Set(d, double(b.i0) + b.sx), ramp);
@@ -215,7 +229,7 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
                 continue;
             }
             seen = true;
-            const auto open = lanes_test.test(px, b_dy, mask, rows.z + row + k, rows.ids + row + k);
+            const auto open = lanes_test.test(px, b_dy, mask, row, k);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
         undecided[r] = open_bits;
@@ -227,11 +241,12 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
 // The depth test on the covered samples of each row, one run per row (covered[r]: its bits). py and
 // px = i + sx are stepped exactly (sums of integers below 2^25 and multiples of 1/16), so they are the
 // values DepthLoop computes.
+template <bool kPerSample>
 HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
-                            std::uint64_t* undecided) {
+                 std::uint64_t* undecided) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
-    const DepthLanes lanes_test(p);
+    const DepthLanes<kPerSample> lanes_test(p);
     const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0), one = hn::Set(d, 1.0);
     const auto px_start = hn::Add(hn::Set(d, double(b.i0) + b.sx), hn::Iota(d, 0.0));
     const auto column = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
@@ -247,12 +262,11 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
         const auto first_column = hn::Set(d, double(first)), last_column = hn::Set(d, double(last));
         auto k_column = hn::Add(column, hn::Set(d, double(from)));
         auto px = hn::Add(px_start, hn::Set(d, double(from)));
-        double* z = rows.z + r * rows.stride;
-        std::int64_t* ids = rows.ids + r * rows.stride;
+        const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         std::uint64_t open_bits = 0;
         for (int k = from; k <= last; k += lanes, px = hn::Add(px, advance), k_column = hn::Add(k_column, advance)) {
             const auto mask = hn::And(hn::Ge(k_column, first_column), hn::Le(k_column, last_column));
-            const auto open = lanes_test.test(px, b_dy, mask, z + k, ids + k);
+            const auto open = lanes_test.test(px, b_dy, mask, row, k);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
         undecided[r] = open_bits;
@@ -263,7 +277,8 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
 
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
                std::uint64_t* undecided) {
-    return DepthOnRuns(b, covered, p, rows, undecided);
+    return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
+                    : DepthOnRuns<false>(b, covered, p, rows, undecided);
 }
 
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
@@ -296,7 +311,8 @@ bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, De
             covered[r] = bits & in_block;
         }
     }
-    return DepthOnRuns(b, covered, p, rows, undecided);
+    return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
+                    : DepthOnRuns<false>(b, covered, p, rows, undecided);
 }
 
 // Instantiates `loop` with the evaluator for the coverage's kind.
@@ -331,7 +347,9 @@ void CoverageBlock(const Block& b, const Coverage& c, std::uint64_t* covered) {
 
 bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, DepthRows rows,
                 std::uint64_t* undecided) {
-    return with_evaluator(b, c, [&](auto& ev) { return DepthLoop(b, ev, p, rows, undecided); });
+    return with_evaluator(b, c, [&](auto& ev) {
+        return rows.err ? DepthLoop<true>(b, ev, p, rows, undecided) : DepthLoop<false>(b, ev, p, rows, undecided);
+    });
 }
 
 double Farthest(const double* z, std::size_t n) {

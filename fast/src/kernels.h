@@ -36,21 +36,24 @@ struct Coverage {
     bool inclusive[3]{};
 };
 
-// The z-buffer test of one triangle: z = z0 + (a * (px - x0) + b * (py - y0)), error bound err; every
-// depth stored where it is tested has an error bound of at most stored_err (the tile's largest so far).
-// Rounding is monotone, so a test against stored_err decided nearer or farther is also decided so against
-// the stored depth's own bound, the test the error analysis proves (Plane, setup.h).
+// The z-buffer test of one triangle: z = z0 + (a * (px - x0) + b * (py - y0)), error bound err. Unless
+// DepthRows carries each stored depth's error bound, every depth stored where it is tested has one of at
+// most stored_err (the tile's largest so far). Rounding is monotone, so a test against stored_err decided
+// nearer or farther is also decided so against the stored depth's own bound, the test the error analysis
+// proves (Plane, setup.h).
 struct DepthPlane {
     double z0, a, x0, b, y0, err, stored_err;
     std::int64_t id;
 };
 
-// A tile's z-buffer at the block's first sample, rows `stride` apart. The kernel reads and rewrites (with
-// their own values) up to a vector past the end of a row: the buffers need that much padding. An empty
-// slot (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while
-// stored_err is finite (an infinite one makes z - stored_err NaN, which decides nothing).
+// A tile's z-buffer at the block's first sample, rows `stride` apart: depths, their error bounds (or
+// nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel reads and rewrites (with their own
+// values) up to a vector past the end of a row: the buffers need that much padding. An empty slot
+// (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while its bound is
+// finite (an infinite one makes z - err NaN, which decides nothing).
 struct DepthRows {
     double* z;
+    double* err;
     std::int64_t* ids;
     std::ptrdiff_t stride;
 };
@@ -64,8 +67,8 @@ struct SmallEdges {
 // covered[r]: the covered samples of row r.
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
 
-// For every covered sample: written (z, id) when z + err < z' - stored_err (decided nearer); left when
-// z - err > z' + stored_err (decided farther). undecided[r] gets the rest of row r, for the exact comparison;
+// For every covered sample: written (z, id, and err where DepthRows keeps bounds) when z + err < z' - err'
+// (decided nearer); left when z - err > z' + err' (decided farther), err' the stored depth's bound. undecided[r] gets the rest of row r, for the exact comparison;
 // returns whether there are any.
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);

@@ -52,8 +52,9 @@ inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
     return 0;
 }
 
-// depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r).
-template <class RowMask>
+// depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r); kPerSample:
+// whether rows.err holds the stored depths' bounds.
+template <bool kPerSample, class RowMask>
 bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, DepthRows rows,
                        std::uint64_t* undecided) {
     bool any = false;
@@ -66,11 +67,12 @@ bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, De
             const double px = double(b.i0 + k) + b.sx;
             const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
             const std::ptrdiff_t at = r * rows.stride + k;
-            const double stored = rows.z[at];
-            if (z + p.err < stored - p.stored_err) {
+            const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
+            if (z + p.err < stored - stored_err) {
                 rows.z[at] = z;
+                if constexpr (kPerSample) rows.err[at] = p.err;
                 rows.ids[at] = p.id;
-            } else if (!(z - p.err > stored + p.stored_err)) {
+            } else if (!(z - p.err > stored + stored_err)) {
                 open |= std::uint64_t{1} << k;
             }
         }
@@ -78,6 +80,14 @@ bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, De
         any = any || open != 0;
     }
     return any;
+}
+
+// depth_rows_scalar with the bounds as rows keeps them.
+template <class RowMask>
+bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, DepthRows rows,
+                       std::uint64_t* undecided) {
+    return rows.err ? depth_rows_scalar<true>(b, row_mask, p, rows, undecided)
+                    : depth_rows_scalar<false>(b, row_mask, p, rows, undecided);
 }
 
 inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, DepthRows rows,
