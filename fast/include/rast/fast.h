@@ -9,10 +9,12 @@
 //
 // Fixed-point range. A triangle whose snapped coordinates and the viewport's extent are all within
 // 2^(29-N) pixels of the origin (fixed8: 2^21) takes the fast path: 64-bit integer edge functions,
-// tiles of 64 x 64 pixels with trivial reject / accept, SIMD rows. Any other triangle, up to
-// coordinates of +-DBL_MAX, takes the wide path: exact edge functions in 128-bit integers (coordinates
-// within 2^(60-N) pixels) or big integers, whose covered span is walked from sample row to sample row.
-// Both give exactly the reference's coverage of the snapped triangle.
+// tiles of 64 x 64 pixels with trivial reject / accept, each sample row's covered run walked from the
+// previous row's by exact integer steps (or, for a small triangle whose edge functions fit, found in
+// 32-bit SIMD lanes), and the depth test in SIMD on that run alone. Any other triangle, up to
+// coordinates of +-DBL_MAX, takes the wide path: the same row walk in 128-bit integers (coordinates
+// within 2^(60-N) pixels) or big integers. Both give exactly the reference's coverage of the snapped
+// triangle.
 //
 // Depth. z is the triangle's plane evaluated in double at the sample; the z-buffer decides the (z, id)
 // order exactly: a comparison the double values and their error bounds cannot settle is made in exact
