@@ -409,7 +409,7 @@ void rasterize_small(const SmallFixed& t, const TileRect& rect, TileBuffer& tile
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
                                 return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
-                            if (!t.narrow) {
+                            if (!narrow_edges(t, std::int64_t{1} << c.bits)) {
                                 std::uint64_t masks[kTile];
                                 fixed_row_masks(edges, c, b, s, masks);
                                 return depth_runs(b, masks, plane, rows, undecided);

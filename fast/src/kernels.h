@@ -68,8 +68,8 @@ struct SmallEdges {
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
 
 // For every covered sample: written (z, id, and err where DepthRows keeps bounds) when z + err < z' - err'
-// (decided nearer); left when z - err > z' + err' (decided farther), err' the stored depth's bound. undecided[r] gets the rest of row r, for the exact comparison;
-// returns whether there are any.
+// (decided nearer); left when z - err > z' + err' (decided farther), err' the stored depth's bound.
+// undecided[r] gets the rest of row r, for the exact comparison; returns whether there are any.
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 

@@ -55,8 +55,8 @@ inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
 // depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r); kPerSample:
 // whether rows.err holds the stored depths' bounds.
 template <bool kPerSample, class RowMask>
-bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, DepthRows rows,
-                       std::uint64_t* undecided) {
+[[gnu::always_inline]] inline bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p,
+                                                     DepthRows rows, std::uint64_t* undecided) {
     bool any = false;
     for (int r = 0; r < b.rows; ++r) {
         const double py = double(b.j0 + r) + b.sy;

@@ -220,14 +220,16 @@ struct SmallFixed {
     std::int32_t x[3], y[3];  // |.| <= 2^29
     std::int32_t i_lo, i_hi, j_lo, j_hi;
     std::int32_t id;
-    bool narrow;  // its edge functions fit in 32 bits at every sample of its bounding box (narrow_edges)
 };
 
-// Whether the edge functions of a triangle whose corners span at most w grid units (scale of them to
-// the pixel) each way fit in 32 bits at every sample of its bounding box. Such a sample lies within
+// Whether the edge functions of `t` fit in 32 bits at every sample of its bounding box (scale: grid
+// units to the pixel). With w the larger extent of its corners in grid units, such a sample lies within
 // w + scale of each corner along each axis (the sample offsets are within the pixel), and an edge's
 // coefficients are coordinate differences, so |E| <= 2 w (w + scale) + 1 (the tie bias).
-inline bool narrow_edges(std::int64_t w, std::int64_t scale) {
+inline bool narrow_edges(const SmallFixed& t, std::int64_t scale) {
+    const auto [xmin, xmax] = std::minmax({t.x[0], t.x[1], t.x[2]});
+    const auto [ymin, ymax] = std::minmax({t.y[0], t.y[1], t.y[2]});
+    const std::int64_t w = std::max(std::int64_t{xmax} - xmin, std::int64_t{ymax} - ymin);
     return 2 * w * (w + scale) + 1 < (std::int64_t{1} << 31);  // w, scale <= 2^30: no overflow
 }
 
@@ -262,7 +264,6 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
         !pixel_range<F>(ymin, ymax, c.sy_min, c.sy_max, c.bits, c.vp.height, out.j_lo, out.j_hi))
         return Lane::culled;
     if (!is_small(out.i_lo, out.i_hi, out.j_lo, out.j_hi)) return Lane::general;
-    out.narrow = narrow_edges(std::max(xmax - xmin, ymax - ymin), std::int64_t{1} << c.bits);
     for (int k = 0; k < 3; ++k) {
         out.x[k] = static_cast<std::int32_t>(x[k]);
         out.y[k] = static_cast<std::int32_t>(y[k]);
