@@ -241,7 +241,7 @@ struct TileBuffer {
         return {z.data() + at, per_sample ? err.data() + at : nullptr, ids.data() + at, cols};
     }
     // far := the largest z over the samples of pixels [0, width) x [0, height), +infinity while any is
-    // empty. Stored depths only ever come nearer, so an old far stays an upper bound.
+    // empty. Exact stored depths only ever come nearer, so an old far, with stored_err, still bounds them.
     void refresh_far(int samples, int width, int height) {
         since_far = 0;
         double largest = -std::numeric_limits<double>::infinity();
@@ -277,8 +277,9 @@ inline constexpr std::size_t kFarRefresh = 4;
 // [i0, i1] x [j0, j1]. Its plane's smallest value there is at a corner of the samples' rectangle (inside
 // the bounding box its error bound covers). As in the kernels' depth test, err and the stored err are
 // four times the bounds on the distance from the exact planes, which absorbs the rounding of the
-// comparison, and far + stored_err rounds to no less than any stored z plus its own bound: the exact
-// depths are then strictly ordered, and the triangle wins no sample.
+// comparison, and far + stored_err rounds to no less than any z stored when far was found plus its own
+// bound, and so bounds every exact stored depth since (they only come nearer): the exact depths are then
+// strictly ordered, and the triangle wins no sample.
 inline bool behind_tile(const Plane& p, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
     const double px = p.a >= 0 ? i0 + c.ox_min : i1 + c.ox_max;
     const double py = p.b >= 0 ? j0 + c.oy_min : j1 + c.oy_max;
@@ -323,9 +324,11 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
             }
         }
         if (!replace) continue;
-        const bool finite = std::isfinite(z);
-        tile.z[slot] = finite ? z : tile.planes.depth(p.id, v, px, py);
-        tile.stored(slot, finite ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN);
+        // Where the plane or its error bound overflows, the exact depth rounded, with a bound of its own
+        // (an infinite one kept in the tile would send its later comparisons to exact arithmetic).
+        const bool bounded = std::isfinite(z) && p.err < std::numeric_limits<double>::infinity();
+        tile.z[slot] = bounded ? z : tile.planes.depth(p.id, v, px, py);
+        tile.stored(slot, bounded ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN);
         tile.ids[slot] = p.id;
     }
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 namespace rast::fast::detail {
 
@@ -42,12 +43,17 @@ public:
     void next_row() {
         quotient_ += step_quotient_;
         remainder_ += step_remainder_;
-        // No branch on the carry for built-in integers (a flag and a conditional move): carries come as
-        // irregularly as the edge's slope makes them, and a branch would mispredict.
-        const Int excess = remainder_ - d_;
-        const int carry = excess >= 0;
-        remainder_ = carry ? excess : remainder_;
-        quotient_ += carry;  // not ++: see floor_div
+        if constexpr (std::is_arithmetic_v<Int>) {
+            // No branch on the carry (a flag and a conditional move): carries come as irregularly as the
+            // edge's slope makes them, and a branch would mispredict.
+            const Int excess = remainder_ - d_;
+            const int carry = excess >= 0;
+            remainder_ = carry ? excess : remainder_;
+            quotient_ += carry;
+        } else if (remainder_ >= d_) {  // big integers: no temporary per row
+            remainder_ -= d_;
+            quotient_ += 1;  // not ++: see floor_div
+        }
     }
 
 private:

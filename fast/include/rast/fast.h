@@ -11,7 +11,8 @@
 // 2^(29-N) pixels of the origin (fixed8: 2^21) takes the fast path: 64-bit integer edge functions,
 // tiles of 64 x 64 pixels with trivial reject / accept, each sample row's covered run walked from the
 // previous row's by exact integer steps (or, for a small triangle whose edge functions fit, found in
-// 32-bit SIMD lanes), and the depth test in SIMD on that run alone. Any other triangle, up to
+// 32-bit SIMD lanes; a block of a few samples is tested sample by sample), and the depth test in SIMD on
+// that run alone. Any other triangle, up to
 // coordinates of +-DBL_MAX, takes the wide path: the same row walk in 128-bit integers (coordinates
 // within 2^(60-N) pixels) or big integers. Both give exactly the reference's coverage of the snapped
 // triangle.
