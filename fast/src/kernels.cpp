@@ -275,10 +275,16 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
     return any != 0;
 }
 
-bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
-               std::uint64_t* undecided) {
+// DepthOnRuns with the bounds as the rows keep them.
+HWY_INLINE bool DepthOnRunsOf(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+                              std::uint64_t* undecided) {
     return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
                     : DepthOnRuns<false>(b, covered, p, rows, undecided);
+}
+
+bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+               std::uint64_t* undecided) {
+    return DepthOnRunsOf(b, covered, p, rows, undecided);
 }
 
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
@@ -311,8 +317,7 @@ bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, De
             covered[r] = bits & in_block;
         }
     }
-    return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
-                    : DepthOnRuns<false>(b, covered, p, rows, undecided);
+    return DepthOnRunsOf(b, covered, p, rows, undecided);
 }
 
 // Instantiates `loop` with the evaluator for the coverage's kind.
