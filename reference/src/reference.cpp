@@ -25,6 +25,13 @@
 #include <utility>
 #include <vector>
 
+// x86-64 only: other processors get one generic build.
+#if defined(__x86_64__)
+#define RAST_FMA_CLONES [[gnu::target_clones("default", "fma")]]
+#else
+#define RAST_FMA_CLONES
+#endif
+
 namespace rast::reference {
 
 Stats& Stats::operator+=(const Stats& o) {
@@ -105,17 +112,43 @@ struct Run {
 };
 constexpr Run kEmptyRun{0, -1};
 
-// The first i in [lo, hi] where `pred` holds, or hi + 1; `pred` must be false, ..., false, true, ...
+// The first i in [lo, hi] where `pred` holds, or hi + 1; `pred` must be false, ..., false, true, ....
+// The search gallops out from `guess` (steps of 1, 2, 4, ...) and then bisects what is left, so an answer
+// d columns from the guess costs O(log d) calls of pred: along a triangle an edge's end moves little
+// from one row to the next.
 template <class Pred>
-int first_true(int lo, int hi, Pred pred) {
-    while (lo <= hi) {
-        const int mid = lo + (hi - lo) / 2;
-        if (pred(mid))
-            hi = mid - 1;
-        else
-            lo = mid + 1;
+int first_true(int lo, int hi, int guess, Pred pred) {
+    if (lo > hi) return lo;
+    // The answer lies in [below, above]: pred is false before below, and true at above unless above = hi + 1.
+    std::int64_t below = lo, above = std::int64_t{hi} + 1;
+    const std::int64_t g = std::clamp(guess, lo, hi);
+    if (pred(static_cast<int>(g))) {
+        above = g;
+        for (std::int64_t step = 1; above - step >= lo; step *= 2) {
+            if (!pred(static_cast<int>(above - step))) {
+                below = above - step + 1;
+                break;
+            }
+            above -= step;
+        }
+    } else {
+        below = g + 1;
+        for (std::int64_t step = 1; below - 1 + step <= hi; step *= 2) {
+            if (pred(static_cast<int>(below - 1 + step))) {
+                above = below - 1 + step;
+                break;
+            }
+            below += step;
+        }
     }
-    return lo;
+    while (below < above) {
+        const std::int64_t mid = below + (above - below) / 2;
+        if (pred(static_cast<int>(mid)))
+            above = mid;
+        else
+            below = mid + 1;
+    }
+    return static_cast<int>(below);
 }
 
 // A covered sample: where it is stored in the framebuffer, and where it is on the screen.
@@ -163,17 +196,20 @@ public:
     // horizontal one. The predicates return its exact sign, so each edge's test is a monotone step along
     // the row and the covered columns are one contiguous run (the covered set is convex): the run starts
     // where the last left edge begins to pass and ends where the first right edge stops passing. A
-    // binary search finds each end in O(log w) predicate calls; the samples inside need no test at all.
-    // A triangle thus costs O(rows * log w) predicate calls plus O(covered samples).
+    // search from where the edge ended on the row before finds each end in O(log w) predicate calls,
+    // far fewer where edges are steep; the samples inside need no test at all. A triangle thus costs
+    // O(rows * log w) predicate calls plus O(covered samples).
     template <class Visit>
     void for_each_run(const CcwTriangle& t, const detail::PixelBox& box, std::span<const SamplePoint> pattern,
                       Visit visit) {
         if (box.empty()) return;
+        std::array<int, 3> ends;  // each edge's end on the row before: the next row's first guess
+        ends.fill(box.i0 + (box.i1 - box.i0) / 2);
         for (int j = box.j0; j <= box.j1; ++j)
             for (int s = 0; s < static_cast<int>(pattern.size()); ++s) {
                 const double y = j + pattern[s].y;  // exact: pattern offsets are multiples of 1/16
                 if (y < t.ymin || y > t.ymax) continue;
-                const Run run = row_run(t, pattern[s].x, y, Run{box.i0, box.i1});
+                const Run run = row_run(t, pattern[s].x, y, Run{box.i0, box.i1}, ends);
                 if (!run.empty()) visit(j, s, run);
             }
     }
@@ -208,15 +244,18 @@ private:
                (o == CGAL::COLLINEAR && kCoversSamplesOnEdge[static_cast<int>(e.kind)]);
     }
 
-    // The covered columns of the sample row at height y with horizontal offset sx, within `run`.
-    Run row_run(const CcwTriangle& t, double sx, double y, Run run) {
-        for (const Edge& e : t.edges) {
+    // The covered columns of the sample row at height y with horizontal offset sx, within `run`; the
+    // search for edge k's end starts at ends[k] and leaves the end found there.
+    Run row_run(const CcwTriangle& t, double sx, double y, Run run, std::array<int, 3>& ends) {
+        for (int k = 0; k < 3; ++k) {
+            const Edge& e = t.edges[k];
             if (run.empty()) break;
             const auto passes = [&](int i) { return inside(e, Point(i + sx, y)); };
             switch (e.kind) {
-                case EdgeKind::left: run.first = first_true(run.first, run.last, passes); break;
+                case EdgeKind::left: run.first = ends[k] = first_true(run.first, run.last, ends[k], passes); break;
                 case EdgeKind::right:
-                    run.last = first_true(run.first, run.last, [&](int i) { return !passes(i); }) - 1;
+                    ends[k] = first_true(run.first, run.last, ends[k], [&](int i) { return !passes(i); });
+                    run.last = ends[k] - 1;
                     break;
                 case EdgeKind::top:
                 case EdgeKind::bottom:
@@ -254,8 +293,12 @@ private:
 
 // The z-buffer with the (z, id) order. It stores each fragment's exact depth rounded to nearest, and
 // rounding to nearest is monotone: a rounded depth strictly above the stored one means an exact depth
-// strictly above it. Only equal rounded depths need a closer look.
+// strictly above it. Only equal rounded depths need a closer look. A sample holds no triangle exactly
+// when its depth is +infinity: a stored depth is that of a point of a triangle, between its vertices'
+// depths, so finite. Depths alone then decide every comparison but a tie, and ids are read only there.
 class ZBuffer {
+    static constexpr double kEmpty = std::numeric_limits<double>::infinity();
+
 public:
     ZBuffer(const Scene& scene, Framebuffer& fb, Stats& stats)
         : triangles_(scene.triangles), fb_(fb), stats_(stats), exact_(scene.triangles) {}
@@ -263,29 +306,26 @@ public:
     // Offers the fragment of triangle `id` at sample q; z encloses its depth (none: no bounded plane).
     void offer(std::int32_t id, const Sample& q, const std::optional<detail::Bounded>& z) {
         const double depth = nearest(id, q, z);
-        const std::size_t index = q.index;
-        const std::int32_t stored = fb_.ids[index];
-        if (stored != Framebuffer::kNoTriangle) {
+        double& stored_depth = fb_.depth[q.index];
+        std::int32_t& stored_id = fb_.ids[q.index];
+        if (stored_depth != kEmpty) {
             // The (z, id) order: nearer, or as near and earlier.
             ++stats_.depth_tests;
-            if (depth > fb_.depth[index]) return;
-            if (depth == fb_.depth[index]) {
-                const int order = compare(id, stored, q, z);
-                if (order > 0 || (order == 0 && stored < id)) return;
+            if (depth > stored_depth) return;
+            if (depth == stored_depth) {
+                const int order = compare(id, stored_id, q, z);
+                if (order > 0 || (order == 0 && stored_id < id)) return;
             }
         }
-        fb_.ids[index] = id;
-        fb_.depth[index] = depth;
+        stored_id = id;
+        stored_depth = depth;
     }
 
     // Whether a fragment at q whose exact depth is at least `lower` loses to the stored one, for
     // certain: rounding to nearest is monotone, so its rounded depth is at least lower, a double. Most
-    // fragments behind others are turned away here, before their depth is enclosed.
-    bool certainly_behind(std::size_t index, double lower) {
-        if (fb_.ids[index] == Framebuffer::kNoTriangle || !(lower > fb_.depth[index])) return false;
-        ++stats_.depth_tests;
-        return true;
-    }
+    // fragments behind others are turned away here, before their depth is enclosed. An empty sample's
+    // +infinity exceeds every lower bound.
+    bool certainly_behind(std::size_t index, double lower) const { return lower > fb_.depth[index]; }
 
 private:
     double nearest(std::int32_t id, const Sample& q, const std::optional<detail::Bounded>& z) {
@@ -310,6 +350,28 @@ private:
     Stats& stats_;
     ExactDepths exact_;
 };
+
+// Offers `count` samples of a run to the z-buffer, q and those after it along the row (x + 1 and
+// index + step each), with their depths on `plane`; returns how many it turned away as certainly behind
+// (each a depth comparison). Most fragments of a deep scene are, after a lower bound on their depth and
+// one load. Compiled twice and chosen when the library loads: for any x86-64, where std::fma is a call
+// into libm, and for processors with FMA, where it is one instruction. Both compute the same exactly
+// rounded results (-ffp-contract=off keeps the compiler from fusing anything else), but the
+// double-double depths are made of FMAs.
+RAST_FMA_CLONES std::uint64_t offer_run(ZBuffer& zbuffer, std::int32_t id, const detail::BoundedPlane& plane,
+                                        Sample q, int count, std::size_t step) {
+    const detail::Bounded row = plane.row(q.y);
+    const detail::AffineLower lower = plane.lower(row);
+    std::uint64_t behind = 0;
+    for (int k = 0; k < count; ++k, q.index += step, q.x += 1) {
+        if (zbuffer.certainly_behind(q.index, lower(q.x))) {
+            ++behind;
+            continue;
+        }
+        zbuffer.offer(id, q, plane.at(row, q.x));
+    }
+    return behind;
+}
 
 // A framebuffer without storage: only its index layout.
 Framebuffer layout(Viewport vp, int samples) {
@@ -381,20 +443,17 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
                 plane = detail::BoundedPlane::make(t);
                 plane_made = true;
             }
-            const double sx = pattern[s].x, y = j + pattern[s].y;
-            const std::size_t first = fb.index(run.first, j, s), step = pattern.size();  // column to column
-            const auto sample = [&](int i) { return Sample{first + (i - run.first) * step, i + sx, y}; };
+            // The run's samples, column by column: x = i + sx steps by 1 exactly (multiples of 1/16
+            // below 2^31), the framebuffer index by the pattern's size.
+            const double y = j + pattern[s].y;
+            Sample q{fb.index(run.first, j, s), run.first + pattern[s].x, y};
+            const std::size_t step = pattern.size();
             if (!plane) {
-                for (int i = run.first; i <= run.last; ++i) zbuffer.offer(id, sample(i), std::nullopt);
+                for (int i = run.first; i <= run.last; ++i, q.index += step, q.x += 1)
+                    zbuffer.offer(id, q, std::nullopt);
                 return;
             }
-            const detail::Bounded row = plane->row(y);
-            const detail::AffineLower lower = plane->lower(row);
-            for (int i = run.first; i <= run.last; ++i) {
-                const Sample q = sample(i);
-                if (zbuffer.certainly_behind(q.index, lower(q.x))) continue;
-                zbuffer.offer(id, q, plane->at(row, q.x));
-            }
+            stats.depth_tests += offer_run(zbuffer, id, *plane, q, run.size(), step);
         });
     }
 
