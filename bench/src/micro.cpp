@@ -109,6 +109,8 @@ void register_benchmarks() {
         {.shape = Shape::huge, .triangles = 10'000},
         {.shape = Shape::huge, .triangles = 2'000, .depth = Depth::separated},  // rast bench's huge scene
         {.shape = Shape::mesh, .triangles = 100'000},
+        // rast bench's fans scene: small triangles around pixel centres, where edges pass through samples.
+        {.shape = Shape::fan, .triangles = 20'000, .depth = Depth::separated},
     };
     for (const SceneSpec& spec : scenes) {
         const std::string label = describe(spec);

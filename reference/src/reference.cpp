@@ -8,8 +8,8 @@
 #include "validate.h"
 
 #include <CGAL/Cartesian_converter.h>
+#include <CGAL/Exact_kernel_selector.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Filtered_predicate.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Simple_cartesian.h>
@@ -50,7 +50,10 @@ namespace {
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Epick::Point_2;
-using ExactKernel = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+// Exact ring arithmetic on doubles, as Epick's own predicates use: the orientation determinant needs
+// no division, so no rationals and none of their gcds (CGAL::Mpzf, a multiprecision float, where GMP is).
+using ExactSelector = CGAL::Exact_kernel_selector<Epick>;
+using ExactKernel = ExactSelector::Exact_kernel_rt;
 using IntervalKernel = CGAL::Simple_cartesian<CGAL::Interval_nt_advanced>;
 
 // ---------------------------------------------------------------------------------------------------
@@ -70,9 +73,9 @@ struct CountedExactOrientation {
 };
 
 // How Epick builds its own predicates (without its static filter): the sign of the determinant in
-// interval arithmetic on the input doubles, and in exact rationals when the interval contains zero.
+// interval arithmetic on the input doubles, and in exact arithmetic when the interval contains zero.
 using FilteredOrientation = CGAL::Filtered_predicate<
-    CountedExactOrientation, IntervalKernel::Orientation_2, CGAL::Cartesian_converter<Epick, ExactKernel>,
+    CountedExactOrientation, IntervalKernel::Orientation_2, ExactSelector::C2E_rt,
     CGAL::Cartesian_converter<Epick, IntervalKernel, CGAL::To_interval<double>>>;
 
 // ---------------------------------------------------------------------------------------------------
