@@ -1,4 +1,5 @@
-// Traversal: the row runs found by binary search against brute-force inside() on every sample, and
+// Traversal: the row runs found by searching from the row before against brute-force inside() on every
+// sample, what that search costs, and
 // multisample counts worked out by hand from the sample tables.
 #include "pixel_box.h"
 #include "scenes.h"
@@ -77,14 +78,25 @@ TEST(Traversal, MatchesBruteForceOnEverySample) {
     }
 }
 
-// A triangle over the whole 512 x 512 viewport: binary search costs at most 10 predicate calls per left
-// or right edge per row (512 columns), 1 per horizontal edge, plus 1 for the triangle's orientation:
-// far fewer than one call per sample.
+// A triangle over the whole 512 x 512 viewport: each row's search costs at most 10 predicate calls per
+// left or right edge (512 columns), 1 per horizontal edge, plus 1 for the triangle's orientation: far
+// fewer than one call per sample.
 TEST(Traversal, LargeTrianglesCostLogarithmicPredicateCallsPerRow) {
     Stats stats;
     render(Scene{Viewport{512, 512}, 1, {flat(-1e6, -1e6, 1e6, -1e6, 0, 1e6)}}, &stats);
     EXPECT_EQ(stats.samples_covered, 512u * 512u);
     EXPECT_LE(stats.orientation_tests, 1u + 512u * 3u * 10u);
+}
+
+// Two steep edges through all 512 rows, their ends moving less than a column from row to row, and a
+// horizontal one below the viewport. Searched from the row before, an end costs 2 or 3 predicate calls
+// (the guess and its neighbours) where bisecting the ~300 columns between the edges would cost 8 or 9;
+// the first row, searched from the middle of the box, may take 20 per edge.
+TEST(Traversal, SteepEdgesCostAFewPredicateCallsPerRow) {
+    Stats stats;
+    render(Scene{Viewport{512, 512}, 1, {flat(100.3, -1, 400.2, -1, 250.1, 5000)}}, &stats);
+    EXPECT_GT(stats.samples_covered, 512u * 250u);
+    EXPECT_LE(stats.orientation_tests, 1u + 512u * (1u + 2u * 3u) + 40u);
 }
 
 // Pixel (1, 1) of a 3x3 viewport is framebuffer indices 4n .. 4n + n - 1 for n samples.
