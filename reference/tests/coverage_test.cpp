@@ -118,6 +118,29 @@ TEST(Coverage, SquareSplitOnMainDiagonal) {
     EXPECT_EQ(picture(render(scene(6, 5, {reversed(upper), reversed(lower)}))), expected);
 }
 
+// The square [0.1, 2.7]^2 split on y = x, through the centres (0.5, 0.5), (1.5, 1.5) and (2.5, 2.5). The
+// diagonal's ends have equal coordinates, so those centres lie exactly on it; but 2.7 - 0.1 and 0.5 - 0.1
+// round in double, so neither the static filter nor interval arithmetic can tell zero from a tiny value,
+// and the exact arithmetic decides. The diagonal is the lower triangle's left edge (covered) and the
+// upper one's right edge (not covered).
+TEST(Coverage, DiagonalThroughCentresDecidedByExactArithmetic) {
+    const Triangle lower = flat(0.1, 0.1, 2.7, 0.1, 2.7, 2.7);
+    const Triangle upper = flat(0.1, 0.1, 2.7, 2.7, 0.1, 2.7);
+    const char* expected = R"(
+110
+100
+000
+)";
+    Stats stats;
+    EXPECT_EQ(picture(render(scene(3, 3, {lower, upper}), &stats)), expected);
+    EXPECT_GE(stats.orientation_exact, 3u);
+    EXPECT_EQ(picture(render(scene(3, 3, {reversed(lower), reversed(upper)}))), expected);
+    for (const double c : {0.5, 1.5, 2.5}) {  // each centre exactly once, whatever the z-buffer would hide
+        EXPECT_TRUE(covers(lower, c, c)) << c;
+        EXPECT_FALSE(covers(upper, c, c)) << c;
+    }
+}
+
 // Eight triangles around the pixel centre c = (4.5, 4.5), spokes towards E, NE, N, ..., SE. Triangle k
 // is (c, P_k, P_k+1). c is covered by triangle k iff spoke c->P_k is a covered edge (it points down, or
 // left: k in {4, 5, 6, 7}) and spoke P_k+1->c is one (k + 1 in {0, 1, 2, 3} mod 8): only k = 7. The
