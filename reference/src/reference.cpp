@@ -25,13 +25,6 @@
 #include <utility>
 #include <vector>
 
-// x86-64 only: other processors get one generic build.
-#if defined(__x86_64__)
-#define RAST_FMA_CLONES [[gnu::target_clones("default", "fma")]]
-#else
-#define RAST_FMA_CLONES
-#endif
-
 namespace rast::reference {
 
 Stats& Stats::operator+=(const Stats& o) {
@@ -353,6 +346,13 @@ private:
     Stats& stats_;
     ExactDepths exact_;
 };
+
+// offer_run's two builds, on x86-64; other processors get one generic build.
+#if defined(__x86_64__)
+#define RAST_FMA_CLONES [[gnu::target_clones("default", "fma")]]
+#else
+#define RAST_FMA_CLONES
+#endif
 
 // Offers `count` samples of a run to the z-buffer, q and those after it along the row (x + 1 and
 // index + step each), with their depths on `plane`; returns how many it turned away as certainly behind
