@@ -408,11 +408,12 @@ void rasterize_small(const SmallFixed& t, const TileRect& rect, TileBuffer& tile
     const int i0 = std::max(rect.i0, p.i_lo), i1 = std::min(rect.i1, p.i_hi);
     const int j0 = std::max(rect.j0, p.j_lo), j1 = std::min(rect.j1, p.j_hi);
     const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
-    rasterize_blocks<F>(p, make_plane(p, c), t.id, i0, i1, j0, j1, rect, tile, scene,
+    const bool narrow = narrow_edges(t, std::int64_t{1} << c.bits);
+    rasterize_blocks<F>(p, narrow ? make_plane_narrow(p, c) : make_plane(p, c), t.id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
                                 return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
-                            if (!narrow_edges(t, std::int64_t{1} << c.bits)) {
+                            if (!narrow) {
                                 std::uint64_t masks[kTile];
                                 fixed_row_masks(edges, c, b, s, masks);
                                 return depth_runs(b, masks, plane, rows, undecided);
@@ -464,29 +465,37 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         const std::size_t expected = (end - begin) / static_cast<std::size_t>(tiles);
         for (std::vector<SmallFixed>& bin : chunk.fixed_bins) bin.reserve(expected + expected / 2 + 8);
     }
+    // Pixel indices inside the viewport are not negative: unsigned division is a shift.
+    const auto tile_of = [](int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); };
     for (std::size_t id = begin; id != end; ++id) {
-        // Checked here rather than in a pass of its own: the triangles are read once.
-        if (!is_finite(scene.triangles[id])) {
-            chunk.non_finite = id;
-            return;
-        }
+        // Checked here rather than in a pass of its own: the triangles are read once. The small lane
+        // only takes corners whose x and y are within the fixed range, hence finite.
+        const Triangle& triangle = scene.triangles[id];
         if (lean) {
             SmallFixed small;
-            const Lane lane = place_small_fixed<F>(scene.triangles[id], static_cast<std::int32_t>(id), scene.c, small);
-            if (lane == Lane::culled) continue;
-            if (lane == Lane::small_fixed) {
-                for (int ty = small.j_lo / kTile; ty <= small.j_hi / kTile; ++ty)
-                    for (int tx = small.i_lo / kTile; tx <= small.i_hi / kTile; ++tx)
+            const Lane lane = place_small_fixed<F>(triangle, static_cast<std::int32_t>(id), scene.c, small);
+            if (lane != Lane::general) {
+                if (!(std::isfinite(triangle.v[0].z) && std::isfinite(triangle.v[1].z) && std::isfinite(triangle.v[2].z))) {
+                    chunk.non_finite = id;
+                    return;
+                }
+                if (lane == Lane::culled) continue;
+                for (int ty = tile_of(small.j_lo); ty <= tile_of(small.j_hi); ++ty)
+                    for (int tx = tile_of(small.i_lo); tx <= tile_of(small.i_hi); ++tx)
                         chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(small);
                 continue;
             }
         }
-        const std::optional<Placed> placed = place<F>(scene.triangles[id], scene.c);
+        if (!is_finite(triangle)) {
+            chunk.non_finite = id;
+            return;
+        }
+        const std::optional<Placed> placed = place<F>(triangle, scene.c);
         if (!placed) continue;
         const bool small = is_small(*placed);
         if (!small) chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
-        for (int ty = placed->j_lo / kTile; ty <= placed->j_hi / kTile; ++ty)
-            for (int tx = placed->i_lo / kTile; tx <= placed->i_hi / kTile; ++tx) {
+        for (int ty = tile_of(placed->j_lo); ty <= tile_of(placed->j_hi); ++ty)
+            for (int tx = tile_of(placed->i_lo); tx <= tile_of(placed->i_hi); ++tx) {
                 const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
                 if (small) chunk.small_bins[tile].push_back({*placed, static_cast<std::int32_t>(id)});
                 else chunk.big_bins[tile].push_back({static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)});

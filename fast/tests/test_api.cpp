@@ -1,4 +1,6 @@
 // Precision names, input validation and rendering into a kept framebuffer.
+#include "pixels.h"
+
 #include <rast/fast.h>
 
 #include <gtest/gtest.h>
@@ -42,6 +44,28 @@ TEST(Api, RejectsBadInput) {
     scene.triangles[0].v[2].y = 1;
     EXPECT_THROW(render(scene, {Precision::fixed8, -1}), std::invalid_argument);
     EXPECT_NO_THROW(render(scene, {Precision::fixed8, 0}));
+}
+
+// A non-finite depth is rejected whichever way binning takes the triangle: small and covering samples,
+// small and of zero area, outside the viewport, or large.
+TEST(Api, RejectsANonFiniteDepthOnEveryLane) {
+    const std::vector<Triangle> lanes{{{{{1, 1, 0}, {9, 1, 0}, {1, 9, 0}}}},
+                                      {{{{1, 1, 0}, {2, 2, 0}, {3, 3, 0}}}},
+                                      {{{{100, 100, 0}, {109, 100, 0}, {100, 109, 0}}}},
+                                      {{{{0, 0, 0}, {60, 0, 0}, {0, 60, 0}}}}};
+    for (const Precision precision : testing::kAllPrecisions)
+        for (const Triangle& lane : lanes) {
+            Scene scene;
+            scene.viewport = {64, 64};
+            scene.triangles = {lane};
+            scene.triangles[0].v[2].z = std::nan("");
+            try {
+                render(scene, {precision, 1});
+                ADD_FAILURE() << "a NaN depth was accepted in " << name(precision);
+            } catch (const std::invalid_argument& e) {
+                EXPECT_NE(std::string(e.what()).find("triangle 0, vertex 2"), std::string::npos) << e.what();
+            }
+        }
 }
 
 // Binning checks the coordinates, chunk by chunk and in parallel; the error still names the first bad
