@@ -120,6 +120,33 @@ TEST(Api, RendersIntoAKeptFramebufferOverwritingEverySample) {
     EXPECT_EQ(target.ids.data(), storage) << "the storage of the right size was not kept";
 }
 
+// Tiles no triangle reaches are written empty without a tile buffer: every sample of them in a kept
+// framebuffer, partial tiles at the right and bottom edges too, with one sample per pixel and four.
+TEST(Api, EmptyTilesOverwriteAKeptFramebuffer) {
+    const Viewport vp{130, 70};  // 3 x 2 tiles of 64, the last column and row partial
+    for (const int samples : {1, 4}) {
+        Scene scene;
+        scene.viewport = vp;
+        scene.samples = samples;
+        scene.triangles.push_back({{{{1, 1, 0.5}, {9, 1, 0.5}, {1, 9, 0.5}}}});
+        Framebuffer target(vp, samples);
+        std::fill(target.ids.begin(), target.ids.end(), 7);
+        std::fill(target.depth.begin(), target.depth.end(), -5.0);
+        render(scene, target, {Precision::fixed8, 2});
+        const Framebuffer fresh = render(scene);
+        EXPECT_EQ(target.ids, fresh.ids);
+        EXPECT_EQ(target.depth, fresh.depth);
+        for (int j = 0; j < vp.height; ++j)
+            for (int i = 0; i < vp.width; ++i)
+                for (int s = 0; s < samples; ++s) {
+                    if (i < 10 && j < 10) continue;  // around the triangle
+                    ASSERT_EQ(target.id(i, j, s), Framebuffer::kNoTriangle) << i << ", " << j << ", " << s;
+                    ASSERT_EQ(target.depth[target.index(i, j, s)], std::numeric_limits<double>::infinity());
+                }
+        EXPECT_EQ(target.id(2, 2, 0), 0);
+    }
+}
+
 TEST(Api, RendersIntoAFramebufferOfAnotherSize) {
     Framebuffer target(Viewport{64, 64}, 4);
     const Viewport vp{3, 3};
