@@ -519,8 +519,8 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
     const int samples = static_cast<int>(scene.c.offsets.size());
     const int width = rect.i1 - rect.i0 + 1;
     // A tile no triangle reaches is written empty straight into the framebuffer, where its pixels' samples
-    // are contiguous row by row: clearing the tile buffer and copying it out would move its bytes twice
-    // more, a tenth of a small-triangle scene's time, half of a mesh's that leaves most tiles empty.
+    // are contiguous row by row: clearing the tile buffer and copying it out moves its bytes twice more
+    // (2.5 ms for a 1024 x 1024 screen on one thread, half the time of a mesh that leaves most tiles empty).
     const bool empty = std::all_of(chunks.begin(), chunks.end(), [index](const Chunk& chunk) {
         return chunk.fixed_bins[index].empty() && chunk.small_bins[index].empty() && chunk.big_bins[index].empty();
     });
