@@ -238,34 +238,73 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     return any != 0;
 }
 
-// The depth test on the covered samples of each row, one run per row (covered[r]: its bits). py and
-// px = i + sx are stepped exactly (sums of integers below 2^25 and multiples of 1/16), so they are the
-// values DepthLoop computes.
-template <bool kPerSample>
-HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
-                 std::uint64_t* undecided) {
+// The covered samples of each row as bits, asked for row by row from 0 (next()): given...
+struct GivenRuns {
+    const std::uint64_t* covered;
+    int r = 0;
+    std::uint64_t next() { return covered[r++]; }
+};
+
+// ...or found from integer edges that fit in 32 bits, in 32-bit lanes (twice as many per vector as the
+// depth test's), with all three edges in the registers.
+struct SmallEdgeRuns {
+    using DI32 = hn::ScalableTag<std::int32_t>;
+    SmallEdgeRuns(const SmallEdges& edges, const Block& b)
+        : width(b.width), in_block(b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1) {
+        const DI32 di;
+        for (int e = 0; e < 3; ++e) {
+            row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
+            step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(hn::Lanes(di))));
+            down[e] = hn::Set(di, edges.dy[e]);
+        }
+    }
+    std::uint64_t next() {
+        const DI32 di;
+        const int lanes32 = static_cast<int>(hn::Lanes(di));
+        std::uint64_t covered = 0;
+        auto v0 = row[0], v1 = row[1], v2 = row[2];
+        for (int k = 0; k < width; k += lanes32) {
+            // All three are >= 0 exactly when their bitwise or is > -1.
+            covered |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
+            v0 = hn::Add(v0, step[0]);
+            v1 = hn::Add(v1, step[1]);
+            v2 = hn::Add(v2, step[2]);
+        }
+        for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
+        // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
+        // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
+        return covered & in_block;
+    }
+    int width;
+    std::uint64_t in_block;
+    hn::Vec<DI32> row[3], step[3], down[3];
+};
+
+// The depth test on the covered samples of each row, one run per row (its columns [first, last]), in
+// vectors from the run's first sample. py = j + sy and px = i + sx are stepped exactly (sums of integers
+// below 2^25 and multiples of 1/16), so they are the values DepthLoop computes. Runs is taken by value,
+// as DepthLoop takes its evaluator.
+template <bool kPerSample, class Runs>
+HWY_INLINE bool DepthOnRuns(const Block& b, Runs runs, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes<kPerSample> lanes_test(p);
-    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0), one = hn::Set(d, 1.0);
-    const auto px_start = hn::Add(hn::Set(d, double(b.i0) + b.sx), hn::Iota(d, 0.0));
-    const auto column = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
-    auto py = hn::Set(d, double(b.j0) + b.sy);
+    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0);
+    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
+    const double px_start = double(b.i0) + b.sx;
+    double py = double(b.j0) + b.sy;
     std::uint64_t any = 0;
-    for (int r = 0; r < b.rows; ++r, py = hn::Add(py, one)) {
+    for (int r = 0; r < b.rows; ++r, py += 1) {
+        const std::uint64_t covered = runs.next();
         undecided[r] = 0;
-        if (covered[r] == 0) continue;
-        const auto b_dy = hn::Mul(pb, hn::Sub(py, y0));
-        // The run is the columns [first, last]; a lane takes part when its column lies within.
-        const int first = std::countr_zero(covered[r]), last = 63 - std::countl_zero(covered[r]);
-        const int from = first / lanes * lanes;
-        const auto first_column = hn::Set(d, double(first)), last_column = hn::Set(d, double(last));
-        auto k_column = hn::Add(column, hn::Set(d, double(from)));
-        auto px = hn::Add(px_start, hn::Set(d, double(from)));
+        if (covered == 0) continue;
+        const int first = std::countr_zero(covered), last = 63 - std::countl_zero(covered);
+        const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, py), y0));
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
+        auto px = hn::Add(hn::Set(d, px_start + first), ramp);
         std::uint64_t open_bits = 0;
-        for (int k = from; k <= last; k += lanes, px = hn::Add(px, advance), k_column = hn::Add(k_column, advance)) {
-            const auto mask = hn::And(hn::Ge(k_column, first_column), hn::Le(k_column, last_column));
+        for (int k = first; k <= last; k += lanes, px = hn::Add(px, advance)) {
+            const auto mask = hn::FirstN(d, static_cast<std::size_t>(last - k + 1));
             const auto open = lanes_test.test(px, b_dy, mask, row, k);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
@@ -275,78 +314,16 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
     return any != 0;
 }
 
-// DepthOnRuns with the bounds as the rows keep them.
-HWY_INLINE bool DepthOnRunsOf(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
-                              std::uint64_t* undecided) {
-    return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
-                    : DepthOnRuns<false>(b, covered, p, rows, undecided);
-}
-
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
                std::uint64_t* undecided) {
-    return DepthOnRunsOf(b, covered, p, rows, undecided);
-}
-
-// One pass over the rows: each row's covered run found first in 32-bit lanes (twice as many per vector
-// as the depth test's), with all three edges in the registers, then tested from its first sample on.
-template <bool kPerSample>
-HWY_INLINE bool SmallLoop(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
-                          std::uint64_t* undecided) {
-    const hn::ScalableTag<std::int32_t> di;
-    const int lanes32 = static_cast<int>(hn::Lanes(di));
-    hn::Vec<decltype(di)> row[3], step[3], down[3];
-    for (int e = 0; e < 3; ++e) {
-        row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
-        step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, lanes32));
-        down[e] = hn::Set(di, edges.dy[e]);
-    }
-    // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
-    // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
-    const std::uint64_t in_block = b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
-    const D d;
-    const int lanes = static_cast<int>(hn::Lanes(d));
-    const DepthLanes<kPerSample> lanes_test(p);
-    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0);
-    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
-    // px = i + sx and py = j + sy are sums of integers below 2^25 and multiples of 1/16, exact in any
-    // order: DepthLoop's values.
-    const double px_start = double(b.i0) + b.sx;
-    double py = double(b.j0) + b.sy;
-    std::uint64_t any = 0;
-    for (int r = 0; r < b.rows; ++r, py += 1) {
-        std::uint64_t covered = 0;
-        auto v0 = row[0], v1 = row[1], v2 = row[2];
-        for (int k = 0; k < b.width; k += lanes32) {
-            // All three are >= 0 exactly when their bitwise or is > -1.
-            covered |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
-            v0 = hn::Add(v0, step[0]);
-            v1 = hn::Add(v1, step[1]);
-            v2 = hn::Add(v2, step[2]);
-        }
-        for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
-        covered &= in_block;
-        undecided[r] = 0;
-        if (covered == 0) continue;
-        // The run is the columns [first, last] (one per row, as in DepthLoop).
-        const int first = std::countr_zero(covered), last = 63 - std::countl_zero(covered);
-        const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, py), y0));
-        const auto at = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-        auto px = hn::Add(hn::Set(d, px_start + first), ramp);
-        std::uint64_t open_bits = 0;
-        for (int k = first; k <= last; k += lanes, px = hn::Add(px, advance)) {
-            const auto mask = hn::FirstN(d, static_cast<std::size_t>(last - k + 1));
-            const auto open = lanes_test.test(px, b_dy, mask, at, k);
-            if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
-        }
-        undecided[r] = open_bits;
-        any |= open_bits;
-    }
-    return any != 0;
+    const GivenRuns runs{covered};
+    return rows.err ? DepthOnRuns<true>(b, runs, p, rows, undecided) : DepthOnRuns<false>(b, runs, p, rows, undecided);
 }
 
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                 std::uint64_t* undecided) {
-    return rows.err ? SmallLoop<true>(b, edges, p, rows, undecided) : SmallLoop<false>(b, edges, p, rows, undecided);
+    const SmallEdgeRuns runs(edges, b);
+    return rows.err ? DepthOnRuns<true>(b, runs, p, rows, undecided) : DepthOnRuns<false>(b, runs, p, rows, undecided);
 }
 
 // Instantiates `loop` with the evaluator for the coverage's kind.
