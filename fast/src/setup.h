@@ -187,8 +187,8 @@ inline Plane make_plane(const Placed& s, const Context& c) {
 // make_plane for a triangle on the fixed grid whose corners lie within 2^15 grid units of each other
 // (narrow_edges): their differences, and the cross product of two (integers below 2^31 times a power
 // of two), are exact in double, so the same operations give the same gradient, and its bounds, which
-// are mul, sub and div's (bounded.h) with those inputs' errors zero, come from the depths alone. A
-// small triangle's setup costs a third less.
+// are mul, sub and div's (bounded.h) with those inputs' errors zero, come from the depths alone: the
+// plane costs a third fewer instructions.
 inline Plane make_plane_narrow(const Placed& s, const Context& c) {
     const Corners& v = s.v;
     const double u = kUnitDouble;
