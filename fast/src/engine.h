@@ -468,27 +468,25 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     // Pixel indices inside the viewport are not negative: unsigned division is a shift.
     const auto tile_of = [](int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); };
     for (std::size_t id = begin; id != end; ++id) {
+        const Triangle& triangle = scene.triangles[id];
+        SmallFixed record;
+        const Lane lane = lean ? place_small_fixed<F>(triangle, static_cast<std::int32_t>(id), scene.c, record)
+                               : Lane::general;
         // Checked here rather than in a pass of its own: the triangles are read once. The small lane
         // only takes corners whose x and y are within the fixed range, hence finite.
-        const Triangle& triangle = scene.triangles[id];
-        if (lean) {
-            SmallFixed small;
-            const Lane lane = place_small_fixed<F>(triangle, static_cast<std::int32_t>(id), scene.c, small);
-            if (lane != Lane::general) {
-                if (!(std::isfinite(triangle.v[0].z) && std::isfinite(triangle.v[1].z) && std::isfinite(triangle.v[2].z))) {
-                    chunk.non_finite = id;
-                    return;
-                }
-                if (lane == Lane::culled) continue;
-                for (int ty = tile_of(small.j_lo); ty <= tile_of(small.j_hi); ++ty)
-                    for (int tx = tile_of(small.i_lo); tx <= tile_of(small.i_hi); ++tx)
-                        chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(small);
-                continue;
-            }
-        }
-        if (!is_finite(triangle)) {
+        const bool finite = lane == Lane::general ? is_finite(triangle)
+                                                  : std::isfinite(triangle.v[0].z) && std::isfinite(triangle.v[1].z) &&
+                                                        std::isfinite(triangle.v[2].z);
+        if (!finite) {
             chunk.non_finite = id;
             return;
+        }
+        if (lane == Lane::culled) continue;
+        if (lane == Lane::small_fixed) {
+            for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
+                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
+                    chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(record);
+            continue;
         }
         const std::optional<Placed> placed = place<F>(triangle, scene.c);
         if (!placed) continue;
