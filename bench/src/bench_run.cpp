@@ -13,11 +13,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <ctime>
 #include <exception>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <ostream>
 #include <span>
 #include <string>
@@ -120,6 +123,29 @@ ErrorRow error_row(const SceneInfo& scene, std::string engine, const BufferDiffe
     return row;
 }
 
+// One engine at one thread count, timed on a scene: run() renders once and answers the seconds it took.
+struct Contender {
+    std::string engine;
+    int threads;
+    std::function<double()> run;
+    std::vector<double> seconds;
+    std::string failed;  // why it stopped (llvmpipe's child process can), or empty
+};
+
+// Timed in rounds, every contender once a round, so that the shared machine's drift over the minutes of a
+// run weighs on all of them alike and their medians can be compared.
+void time_in_rounds(std::vector<Contender>& contenders, std::size_t rounds) {
+    for (std::size_t k = 0; k < rounds; ++k)
+        for (Contender& c : contenders) {
+            if (!c.failed.empty()) continue;
+            try {
+                c.seconds.push_back(c.run());
+            } catch (const std::exception& e) {
+                c.failed = e.what();
+            }
+        }
+}
+
 // Speed of every engine and thread count, then each one's error against the reference's framebuffer.
 // With `time` false (the hard cases) every engine renders once, untimed.
 void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& speed,
@@ -137,15 +163,52 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
     s.info.fragments = stats.samples_covered;
     if (time) speed.push_back(speed_row(s.info, "reference", 1, reference_seconds));
 
+    const std::span<const int> thread_counts = time ? std::span<const int>(kThreads) : std::span<const int>();
+    std::vector<Contender> contenders;
     std::vector<ErrorRow> rows;
+    // Each mode's result, rendered once untimed (also the warm-up), then timed into it, kept as llvmpipe
+    // draws into its context's.
+    std::vector<Framebuffer> results;
+    results.reserve(kModes.size());
     for (const fast::Precision mode : kModes) {
         progress << ", " << fast::name(mode) << std::flush;
-        Framebuffer result = fast::render(scene, {mode, 1});  // also the warm-up
+        Framebuffer& result = results.emplace_back(fast::render(scene, {mode, 1}));
         rows.push_back(error_row(s.info, std::string(fast::name(mode)), compare_buffers(exact, result)));
-        // Timed into the kept framebuffer, as llvmpipe draws into its context's.
-        for (const int threads : time ? std::span<const int>(kThreads) : std::span<const int>()) {
-            speed.push_back(speed_row(s.info, std::string(fast::name(mode)), threads,
-                                      time_runs([&] { fast::render(scene, result, {mode, threads}); }, plan.runs)));
+        for (const int threads : thread_counts)
+            contenders.push_back({std::string(fast::name(mode)), threads,
+                                  [&scene, &result, mode, threads] {
+                                      return seconds_of([&] { fast::render(scene, result, {mode, threads}); });
+                                  },
+                                  {}, {}});
+    }
+    // llvmpipe in child processes, one per thread count; untimed, one draw on one thread gives the error.
+    std::vector<std::unique_ptr<LlvmpipeChild>> llvmpipe;
+    if (scene.samples == 1) {
+        progress << ", llvmpipe" << std::flush;
+        try {
+            for (const int threads : time ? thread_counts : std::span<const int>(kThreads).first(1)) {
+                LlvmpipeChild& child = *llvmpipe.emplace_back(std::make_unique<LlvmpipeChild>(scene, threads));
+                contenders.push_back({"llvmpipe", threads, [&child] { return child.draw(); }, {}, {}});
+            }
+            rows.push_back(error_row(s.info, "llvmpipe", compare_buffers(exact, llvmpipe.front()->result())));
+        } catch (const std::exception& e) {
+            notes.push_back("llvmpipe skipped on " + s.info.name + ": " + e.what());
+            progress << " (skipped: " << e.what() << ")";
+            contenders.erase(std::remove_if(contenders.begin(), contenders.end(),
+                                            [](const Contender& c) { return c.engine == "llvmpipe"; }),
+                             contenders.end());
+        }
+    }
+    if (time) {
+        progress << ", timing" << std::flush;
+        time_in_rounds(contenders, plan.runs);
+        for (Contender& c : contenders) {
+            if (c.failed.empty()) {
+                speed.push_back(speed_row(s.info, c.engine, c.threads, std::move(c.seconds)));
+            } else {
+                notes.push_back(c.engine + " on " + std::to_string(c.threads) + " threads not timed on " + s.info.name +
+                                ": " + c.failed);
+            }
         }
     }
     progress << ", coverage" << std::flush;
@@ -154,24 +217,6 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
         rows[m].misclassified = coverage[m].samples;
         rows[m].triangles_affected = coverage[m].triangles;
         rows[m].watertight_violations = coverage[m].watertight;
-    }
-    if (scene.samples == 1) {
-        progress << ", llvmpipe" << std::flush;
-        try {
-            // Untimed, one draw on one thread is enough for the error.
-            const std::span<const int> thread_counts = time ? std::span<const int>(kThreads)
-                                                            : std::span<const int>(kThreads).first(1);
-            for (const int threads : thread_counts) {
-                LlvmpipeDraws draws = time_llvmpipe_draws(scene, threads, time ? plan.runs : 1);
-                if (time) speed.push_back(speed_row(s.info, "llvmpipe", threads, std::move(draws.seconds)));
-                if (threads == kThreads.front()) {
-                    rows.push_back(error_row(s.info, "llvmpipe", compare_buffers(exact, draws.result)));
-                }
-            }
-        } catch (const std::exception& e) {
-            notes.push_back("llvmpipe skipped on " + s.info.name + ": " + e.what());
-            progress << " (skipped: " << e.what() << ")";
-        }
     }
     errors.insert(errors.end(), rows.begin(), rows.end());
     progress << '\n';

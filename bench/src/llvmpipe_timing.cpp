@@ -2,12 +2,13 @@
 
 #include <rast/llvmpipe.h>
 
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <stdexcept>
@@ -16,38 +17,14 @@
 namespace rast::bench {
 namespace {
 
+// The conversation on the socket: the parent sends one byte per request, the child answers each with
+// its first byte and what follows it. On any failure the child answers 'E' and its message, and exits.
+constexpr char kDraw = 'D', kRead = 'I';
+constexpr char kReady = 'R', kTimed = 'T', kIds = 'I', kError = 'E';
+
 template <typename T>
 void append_raw(std::string& bytes, const std::vector<T>& values) {
     bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-}
-
-template <typename T>
-std::size_t take_raw(const std::string& bytes, std::size_t at, std::vector<T>& values) {
-    std::memcpy(values.data(), bytes.data() + at, values.size() * sizeof(T));
-    return at + values.size() * sizeof(T);
-}
-
-// The child's reply on the pipe: 'T', the raw seconds, ids and depths, or 'E' and an error message.
-std::string measure(const Scene& scene, int threads, std::size_t iterations) {
-    try {
-        peer::Llvmpipe llvmpipe(threads);
-        llvmpipe.load(scene);
-        llvmpipe.draw();
-        std::vector<double> seconds(iterations);
-        for (double& s : seconds) {
-            const auto start = std::chrono::steady_clock::now();
-            llvmpipe.draw();
-            s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        }
-        const Framebuffer result = llvmpipe.read_ids();
-        std::string reply("T");
-        append_raw(reply, seconds);
-        append_raw(reply, result.ids);
-        append_raw(reply, result.depth);
-        return reply;
-    } catch (const std::exception& e) {
-        return std::string("E") + e.what();
-    }
 }
 
 void write_all(int fd, const std::string& bytes) {
@@ -59,53 +36,131 @@ void write_all(int fd, const std::string& bytes) {
     }
 }
 
-std::string read_all(int fd) {
-    std::string bytes;
-    char chunk[65536];
-    while (true) {
-        const ssize_t n = read(fd, chunk, sizeof chunk);
+// Up to `size` bytes, fewer only where the other end closed.
+std::size_t read_up_to(int fd, char* to, std::size_t size) {
+    std::size_t done = 0;
+    while (done < size) {
+        const ssize_t n = read(fd, to + done, size - done);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return bytes;
-        bytes.append(chunk, static_cast<std::size_t>(n));
+        if (n <= 0) break;
+        done += static_cast<std::size_t>(n);
     }
+    return done;
 }
 
-[[noreturn]] void fail(const std::string& what) {
-    throw std::runtime_error("llvmpipe timing: " + what);
+std::string read_to_end(int fd) {
+    std::string bytes;
+    char chunk[4096];
+    while (const std::size_t n = read_up_to(fd, chunk, sizeof chunk)) bytes.append(chunk, n);
+    return bytes;
+}
+
+// The child's side, until the parent closes the socket.
+[[noreturn]] void serve(int fd, const Scene& scene, int threads) {
+    try {
+        peer::Llvmpipe llvmpipe(threads);
+        llvmpipe.load(scene);
+        llvmpipe.draw();
+        write_all(fd, std::string(1, kReady));
+        char request = 0;
+        while (read_up_to(fd, &request, 1) == 1) {
+            std::string reply;
+            if (request == kDraw) {
+                const auto start = std::chrono::steady_clock::now();
+                llvmpipe.draw();
+                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                reply = std::string(1, kTimed) + std::string(reinterpret_cast<const char*>(&seconds), sizeof seconds);
+            } else if (request == kRead) {
+                const Framebuffer result = llvmpipe.read_ids();
+                reply = std::string(1, kIds);
+                append_raw(reply, result.ids);
+                append_raw(reply, result.depth);
+            } else {
+                throw std::runtime_error("unknown request " + std::to_string(request));
+            }
+            write_all(fd, reply);
+        }
+    } catch (const std::exception& e) {
+        write_all(fd, std::string(1, kError) + e.what());
+    }
+    _exit(0);  // no atexit handlers or destructors of the parent's state in the child
 }
 
 }  // namespace
 
-LlvmpipeDraws time_llvmpipe_draws(const Scene& scene, int threads, std::size_t iterations) {
+LlvmpipeChild::LlvmpipeChild(const Scene& scene, int threads) : viewport_(scene.viewport) {
     int fds[2];
-    if (pipe(fds) != 0) fail(std::string("pipe: ") + std::strerror(errno));
-    const pid_t child = fork();
-    if (child < 0) {
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
+        fail(std::string("socketpair: ") + std::strerror(errno));
+    pid_ = fork();
+    if (pid_ < 0) {
         close(fds[0]);
         close(fds[1]);
         fail(std::string("fork: ") + std::strerror(errno));
     }
-    if (child == 0) {
-        close(fds[0]);
-        write_all(fds[1], measure(scene, threads, iterations));
-        _exit(0);  // no atexit handlers or destructors of the parent's state in the child
+    if (pid_ == 0) {
+        // Every other descriptor closed, among them the parent's ends of other children's sockets: a
+        // child holding one would keep that child from ever seeing its parent close it.
+        close_range(3, static_cast<unsigned>(fds[1]) - 1, 0);
+        close_range(static_cast<unsigned>(fds[1]) + 1, ~0U, 0);
+        serve(fds[1], scene, threads);
     }
     close(fds[1]);
-    const std::string reply = read_all(fds[0]);
-    close(fds[0]);
-    int status = 0;
-    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    socket_ = fds[0];
+    char reply = 0;
+    if (read_up_to(socket_, &reply, 1) != 1 || reply != kReady)
+        fail(reply == kError ? read_to_end(socket_) : "the child process died");
+}
+
+LlvmpipeChild::~LlvmpipeChild() { end(); }
+
+void LlvmpipeChild::end() {
+    if (socket_ >= 0) close(socket_);  // the child sees the end of its requests and exits
+    socket_ = -1;
+    if (pid_ > 0) {
+        int status = 0;
+        while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+        }
     }
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail("the child process died");
-    if (reply.empty()) fail("no reply from the child process");
-    if (reply[0] == 'E') fail(reply.substr(1));
-    LlvmpipeDraws draws{std::vector<double>(iterations), Framebuffer(scene.viewport, 1)};
-    const std::size_t expected =
-        1 + iterations * sizeof(double) + draws.result.ids.size() * (sizeof(std::int32_t) + sizeof(double));
-    if (reply.size() != expected) fail("truncated reply from the child process");
-    std::size_t at = take_raw(reply, 1, draws.seconds);
-    at = take_raw(reply, at, draws.result.ids);
-    take_raw(reply, at, draws.result.depth);
+    pid_ = -1;
+}
+
+void LlvmpipeChild::fail(const std::string& what) {
+    end();
+    throw std::runtime_error("llvmpipe timing: " + what);
+}
+
+void LlvmpipeChild::ask(char request, char expected, char* to, std::size_t size) {
+    if (socket_ < 0) fail("the child process has ended");
+    // MSG_NOSIGNAL: a child that died must not take the parent with it (SIGPIPE).
+    if (send(socket_, &request, 1, MSG_NOSIGNAL) != 1) fail("the child process died");
+    char reply = 0;
+    if (read_up_to(socket_, &reply, 1) != 1) fail("the child process died");
+    if (reply == kError) fail(read_to_end(socket_));
+    if (reply != expected || read_up_to(socket_, to, size) != size) fail("truncated reply from the child process");
+}
+
+double LlvmpipeChild::draw() {
+    double seconds = 0;
+    ask(kDraw, kTimed, reinterpret_cast<char*>(&seconds), sizeof seconds);
+    return seconds;
+}
+
+Framebuffer LlvmpipeChild::result() {
+    Framebuffer result(viewport_, 1);
+    const std::size_t n = result.ids.size();
+    std::string bytes(n * (sizeof(std::int32_t) + sizeof(double)), '\0');
+    ask(kRead, kIds, bytes.data(), bytes.size());
+    std::memcpy(result.ids.data(), bytes.data(), n * sizeof(std::int32_t));
+    std::memcpy(result.depth.data(), bytes.data() + n * sizeof(std::int32_t), n * sizeof(double));
+    return result;
+}
+
+LlvmpipeDraws time_llvmpipe_draws(const Scene& scene, int threads, std::size_t iterations) {
+    LlvmpipeChild llvmpipe(scene, threads);
+    LlvmpipeDraws draws;
+    for (std::size_t k = 0; k < iterations; ++k) draws.seconds.push_back(llvmpipe.draw());
+    draws.result = llvmpipe.result();
     return draws;
 }
 

@@ -16,15 +16,19 @@ struct Spread {
 // Throws std::invalid_argument for an empty list.
 Spread spread(std::vector<double> seconds);
 
+// The wall time of one call of `run`.
+template <typename Run>
+double seconds_of(Run&& run) {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // The wall time of each of `runs` calls of `run`.
 template <typename Run>
 std::vector<double> time_runs(Run&& run, std::size_t runs) {
     std::vector<double> seconds;
-    for (std::size_t k = 0; k < runs; ++k) {
-        const auto start = std::chrono::steady_clock::now();
-        run();
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
+    for (std::size_t k = 0; k < runs; ++k) seconds.push_back(seconds_of(run));
     return seconds;
 }
 
