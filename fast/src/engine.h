@@ -26,8 +26,6 @@
 
 namespace rast::fast::detail {
 
-inline constexpr int kTile = kRowLanes;  // a tile row is one kernel row
-
 inline void validate(Viewport vp, int samples) {
     constexpr int kMaxSide = 1 << 24;  // pixel indices convert exactly to float in the float32 kernel
     if (vp.width < 1 || vp.height < 1 || vp.width > kMaxSide || vp.height > kMaxSide)
@@ -147,9 +145,9 @@ enum class TileClass { reject, accept, partial };
 
 // The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: an edge function is linear, so its
 // extremes over the samples' bounding rectangle are at corners chosen by the signs of its coefficients.
-// Exact for the integer path; the wide path reads its exact spans instead. For the float modes the
-// double value at a corner is within margin of the exact one minus the mode's error bound, so beyond
-// +-margin the mode's sign is certain.
+// Exact for the integer path; the wide path reads its spans' extremes per band instead. For the float
+// modes the double value at a corner is within margin of the exact one minus the mode's error bound, so
+// beyond +-margin the mode's sign is certain.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
     if (!t.classify_tiles) return TileClass::partial;
     bool all_inside = true;
@@ -181,17 +179,11 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
             break;
         }
         case Path::wide: {
-            // Decided when every sample row's span holds all of the tile's columns, or none.
-            bool all_outside = true;
-            const std::size_t samples = c.offsets.size();
-            for (std::size_t k = static_cast<std::size_t>(j0 - t.p.j_lo) * samples;
-                 k < static_cast<std::size_t>(j1 - t.p.j_lo + 1) * samples; ++k) {
-                const Span& span = t.spans[k];
-                all_inside = all_inside && span.lo <= i0 && span.hi >= i1;
-                all_outside = all_outside && (span.lo > i1 || span.hi < i0 || span.lo > span.hi);
-                if (!all_inside && !all_outside) return TileClass::partial;
-            }
-            return all_outside ? TileClass::reject : TileClass::accept;
+            // [j0, j1] is the triangle's rows in one row of tiles: one band's (SpanBand).
+            const SpanBand& band = t.bands[static_cast<std::size_t>(j0 / kTile - t.p.j_lo / kTile)];
+            if (band.lo_max <= i0 && band.hi_min >= i1) return TileClass::accept;
+            if (band.hi_max < i0 || band.lo_min > i1) return TileClass::reject;
+            return TileClass::partial;
         }
     }
     return all_inside ? TileClass::accept : TileClass::partial;

@@ -4,7 +4,9 @@
 
 #include "bounded.h"
 #include "exact.h"
+#include "kernels.h"
 #include "snap.h"
+#include "spans.h"
 
 #include <rast/fast.h>
 #include <rast/fast_faults.h>
@@ -20,6 +22,9 @@
 #include <vector>
 
 namespace rast::fast::detail {
+
+// Screen tiles are kTile x kTile pixels; a tile row is one kernel row.
+inline constexpr int kTile = kRowLanes;
 
 // The 64-bit path's range in fixed units: with every vertex and sample within 2^29 of the origin, an
 // edge function |A (X - ax) + B (Y - ay)| stays below 2^61 and its bias, steps and sums fit an int64.
@@ -99,6 +104,7 @@ struct Setup {
     // side for each edge is classified without evaluating them; +infinity when not computed.
     double float_margin = std::numeric_limits<double>::infinity();
     std::vector<Span> spans;  // wide path: per sample row, see wide_spans
+    std::vector<SpanBand> bands;  // wide path with classify_tiles: spans' extremes per row of screen tiles
 };
 
 // The tie rule of shared/DESIGN.md for edge a -> b of a counter-clockwise triangle: left (dy < 0) and
@@ -370,6 +376,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
         }
         case Path::wide:
             s.spans = wide_spans(v, c.bits, owning_edges(), c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi);
+            if (classify_tiles) s.bands = span_bands(s.spans, c.offsets.size(), s.p.j_lo, s.p.j_hi, kTile);
             break;
     }
     s.plane = make_plane(placed, c);

@@ -22,12 +22,15 @@ Pixels all_pixels(Viewport vp) {
     return out;
 }
 
-Pixels columns_from(int first, Viewport vp) {
+// Every row's pixels in columns [first, last].
+Pixels columns(int first, int last, Viewport vp) {
     Pixels out;
     for (int j = 0; j < vp.height; ++j)
-        for (int i = first; i < vp.width; ++i) out.insert({i, j});
+        for (int i = first; i <= last; ++i) out.insert({i, j});
     return out;
 }
+
+Pixels columns_from(int first, Viewport vp) { return columns(first, vp.width - 1, vp); }
 
 class GuardBand : public ::testing::TestWithParam<Precision> {};
 
@@ -108,6 +111,39 @@ TEST(GuardBandFixed, SmallBoxOfALargeTriangleOnBothSidesOf32BitEdges) {
     for (Precision p : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
         for (const double r : {60.0, 70.0, 1000.0, 1100.0, 0x1p20})
             EXPECT_EQ(rendered_pixels(tri(2.5, -r, r, 0, 2.5, r), vp, p), columns_from(2, vp)) << name(p) << " " << r;
+}
+
+// The wide path classifies whole tiles by its spans' extremes per row of tiles, on a viewport of 4 x 3
+// tiles (the last ones partial), with triangles whose other corners are far enough away for the wide
+// path in every fixed mode, with its 128-bit integers and with big ones. A vertical left edge x = 70.5
+// through the centres (owned) covers columns 70.. (as in FarVerticesKeepTheTieRule): the second column
+// of tiles is partial, the third and fourth accepted. A vertical right edge x = 129.5 (not owned) covers
+// columns ..128: the first two columns of tiles are accepted, the third partial (its box ends at 129).
+TEST(GuardBandFixed, WideTrianglesClassifyWholeTiles) {
+    const Viewport vp{200, 150};
+    for (Precision p : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+        for (const double r : {0x1p30, 0x1p50}) {
+            EXPECT_EQ(rendered_pixels(tri(70.5, -r, 2 * r, 0, 70.5, r), vp, p), columns_from(70, vp))
+                << name(p) << " " << r;
+            EXPECT_EQ(rendered_pixels(tri(129.5, r, -2 * r, 0, 129.5, -r), vp, p), columns(0, 128, vp))
+                << name(p) << " " << r;
+        }
+}
+
+// A wide sliver steeper than a tile is wide: along x = 96 + 100 (y - 32), from row to row its spans
+// jump 100 pixels, so in the first row of tiles the second tile lies between them and holds none. The
+// band's extremes cannot see that gap (the tile is rasterized as partial): the screen must still get
+// exactly the triangle's coverage, found here without tiles (covered_pixels).
+TEST(GuardBandFixed, WideSliverSkippingATileKeepsItsCoverage) {
+    const Viewport vp{256, 128};
+    const double r = 0x1p30;
+    for (Precision p : {Precision::fixed4, Precision::fixed8, Precision::fixed16}) {
+        const Triangle sliver = tri(96 - 100 * r, 32 - r, 96 + 100 * r, 32 + r, 99 + 100 * r, 32 + r);
+        const Pixels expected = covered_pixels(sliver, vp, p);
+        EXPECT_GE(expected.size(), 2u) << name(p);  // a row above and below the gap, at least
+        for (const auto& [i, j] : expected) EXPECT_FALSE(i >= 64 && i < 128 && j < 64) << name(p) << " " << i << "," << j;
+        EXPECT_EQ(rendered_pixels(sliver, vp, p), expected) << name(p);
+    }
 }
 
 }  // namespace
