@@ -198,7 +198,6 @@ struct TileBuffer {
           rows(std::min(kTile, vp.height)),
           size(static_cast<std::size_t>(samples) * rows * cols),
           z(size + kRowLanes, std::numeric_limits<double>::infinity()),
-          err(size + kRowLanes, 0.0),
           ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
     // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
     void clear() {
@@ -219,6 +218,7 @@ struct TileBuffer {
     void admit(double e) {
         constexpr double kSpread = 0x1p20;
         if (!per_sample && stored_err > 0 && !(e <= kSpread * stored_err && stored_err <= kSpread * e)) {
+            err.resize(size + kRowLanes);
             for (std::size_t k = 0; k < size; ++k) err[k] = ids[k] < 0 ? 0 : stored_err;
             per_sample = true;
         }
@@ -249,7 +249,7 @@ struct TileBuffer {
     }
     int cols, rows;  // the row stride and rows per sample plane
     std::size_t size;
-    std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample
+    std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample (admit() allocates it)
     std::vector<std::int64_t> ids;
     double stored_err = 0;  // an error bound of every depth stored since clear()
     bool per_sample = false;
