@@ -84,16 +84,13 @@ inline void fixed_edges_at(const std::array<FixedEdge, 3>& edges, const Context&
 }
 
 // masks[r]: the samples of row r of block b (sample index s) inside the integer edges, each row's run
-// walked from the previous one's (spans.h) rather than found by evaluating the edges along the row.
+// walked from the row before (row_masks, after spans.h) rather than found by evaluating the edges along
+// the row. masks holds kTile entries.
 inline void fixed_row_masks(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
                             std::uint64_t* masks) {
-    std::int64_t e[3], dx[3], dy[3];
-    fixed_edges_at(edges, c, b, s, e, dx, dy);
-    RowSpans<std::int64_t> walk(dx, e, dy, 0, b.width - 1);
-    for (int r = 0; r < b.rows; ++r) {
-        const Span span = walk.next();
-        masks[r] = span_bits(span.lo, span.hi, 0);
-    }
+    RowEdges walk;
+    fixed_edges_at(edges, c, b, s, walk.q, walk.p, walk.step);
+    row_masks(walk, b.width, b.rows, masks);
 }
 
 // How the kernels find the samples of block b (sample index s) that t covers; the paths that compute

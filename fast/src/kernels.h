@@ -64,6 +64,17 @@ struct SmallEdges {
     std::int32_t e[3], dx[3], dy[3];
 };
 
+// Integer edge functions along the sample rows of a block, E_k = p[k] i + q[k] at column i, q[k] growing
+// by step[k] from row to row: RowSpans' inputs (spans.h), for the fixed path, whose values fit in 64 bits.
+struct RowEdges {
+    std::int64_t p[3], q[3], step[3];
+};
+
+// masks[r]: the columns i in [0, width) of row r where all three are >= 0, for r < rows: RowSpans' run
+// of the row as bits, several rows walked at once. masks must hold kRowLanes entries (rows past `rows`
+// may be written).
+void row_masks(const RowEdges& edges, int width, int rows, std::uint64_t* masks);
+
 // covered[r]: the covered samples of row r.
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
 

@@ -44,6 +44,7 @@ public:
         : d_(d), quotient_(floor_div(q, d)), remainder_(q - quotient_ * d), step_quotient_(floor_div(step, d)),
           step_remainder_(step - step_quotient_ * d) {}
     const Int& value() const { return quotient_; }
+    const Int& remainder() const { return remainder_; }  // Q - value() d, in [0, d)
     void next_row() {
         quotient_ += step_quotient_;
         remainder_ += step_remainder_;
