@@ -591,9 +591,11 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
     // its triangles in id order, whatever the number of chunks. Binning sets up the big triangles, so
     // a scene of a few thousand of them already needs it shared out: rast bench's 2000 huge ones (wide
-    // path, exact spans) spend a fifth of their instructions there.
+    // path, exact spans) spend half their instructions there. A chunk costs about 10^5 instructions of
+    // its own (a bin per tile, merged per tile), which the bunny's 3674 triangles in 8 chunks did not
+    // earn back: chunks of at least kChunkTriangles, as many as up to 4 per worker allow.
     const std::size_t n = scene.triangles.size();
-    constexpr std::size_t kChunkTriangles = 256;
+    constexpr std::size_t kChunkTriangles = 1024;
     const std::size_t workers = static_cast<std::size_t>(arena.max_concurrency());
     // A multiple of the workers, so that chunks of equal size share out evenly: 2000 huge triangles in 7
     // chunks kept one of two threads binning 4/7 of the time.
