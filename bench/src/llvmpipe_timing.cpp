@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -55,6 +56,20 @@ std::string read_to_end(int fd) {
     return bytes;
 }
 
+// In the child: every descriptor from 3 up closed but `keep`, among them the parent's ends of other
+// children's sockets (a child holding one would keep that child from ever seeing its parent close it).
+// close_range where the kernel has it (Linux 5.9 on), one by one where it does not.
+void close_all_but(int keep) {
+    const auto close_from = [](unsigned first, unsigned last) {
+        if (first > last || close_range(first, last, 0) == 0) return;
+        const long open_max = sysconf(_SC_OPEN_MAX);
+        for (long fd = first; fd <= std::min<long>(last, open_max - 1); ++fd) close(static_cast<int>(fd));
+    };
+    const unsigned k = static_cast<unsigned>(keep);
+    if (k > 3) close_from(3, k - 1);
+    close_from(std::max(k + 1, 3U), ~0U);
+}
+
 // The child's side, until the parent closes the socket.
 [[noreturn]] void serve(int fd, const Scene& scene, int threads) {
     try {
@@ -99,10 +114,8 @@ LlvmpipeChild::LlvmpipeChild(const Scene& scene, int threads) : viewport_(scene.
         fail(std::string("fork: ") + std::strerror(errno));
     }
     if (pid_ == 0) {
-        // Every other descriptor closed, among them the parent's ends of other children's sockets: a
-        // child holding one would keep that child from ever seeing its parent close it.
-        close_range(3, static_cast<unsigned>(fds[1]) - 1, 0);
-        close_range(static_cast<unsigned>(fds[1]) + 1, ~0U, 0);
+        close(fds[0]);
+        close_all_but(fds[1]);
         serve(fds[1], scene, threads);
     }
     close(fds[1]);

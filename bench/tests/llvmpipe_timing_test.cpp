@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -34,6 +36,21 @@ TEST(LlvmpipeChild, ChildrenOfTwoThreadCountsEndInEitherOrder) {
     one.reset();
     EXPECT_GT(two.draw(), 0);
     EXPECT_EQ(two.result().ids, reference::render(scene).ids);
+}
+
+TEST(LlvmpipeChild, EndsWhenItsSocketTakesDescriptorZero) {
+    // With standard input closed, the socket pair is descriptors 0 and 3: the child must close the
+    // parent's end below 3 as well, or it never sees that end close and this hangs.
+    const int saved = dup(0);
+    ASSERT_GE(saved, 0);
+    close(0);
+    {
+        const Scene scene = on_grid_scene();
+        LlvmpipeChild llvmpipe(scene, 1);
+        EXPECT_GT(llvmpipe.draw(), 0);
+    }
+    ASSERT_EQ(dup2(saved, 0), 0);
+    close(saved);
 }
 
 TEST(LlvmpipeChild, ThrowsTheChildsMessage) {
