@@ -591,16 +591,19 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
     // its triangles in id order, whatever the number of chunks. Binning sets up the big triangles, so
     // a scene of a few thousand of them already needs it shared out: rast bench's 2000 huge ones (wide
-    // path, exact spans) spend half their instructions there. A chunk costs about 10^5 instructions of
-    // its own (a bin per tile, merged per tile), which the bunny's 3674 triangles in 8 chunks did not
-    // earn back: chunks of at least kChunkTriangles, as many as up to 4 per worker allow.
+    // path, exact spans) spend half their instructions there. The count is a multiple of the workers,
+    // so that chunks of equal size share out evenly (2000 huge triangles in 7 chunks kept one of two
+    // threads binning 4/7 of the time): one per worker, up to four where each still gets
+    // kChunkTriangles. A chunk costs about 10^5 instructions of its own (a bin per tile, merged per
+    // tile), which the bunny's 3674 triangles in 8 chunks did not earn back. A scene too small to give
+    // every worker kMinChunkTriangles is binned in as many chunks as it fills.
     const std::size_t n = scene.triangles.size();
-    constexpr std::size_t kChunkTriangles = 1024;
+    constexpr std::size_t kChunkTriangles = 1024, kMinChunkTriangles = 128;
     const std::size_t workers = static_cast<std::size_t>(arena.max_concurrency());
-    // A multiple of the workers, so that chunks of equal size share out evenly: 2000 huge triangles in 7
-    // chunks kept one of two threads binning 4/7 of the time.
     const std::size_t chunk_count =
-        workers == 1 ? 1 : workers * std::clamp<std::size_t>(n / (kChunkTriangles * workers), 1, 4);
+        workers == 1 ? 1
+                     : std::min(workers * std::clamp<std::size_t>(n / (kChunkTriangles * workers), 1, 4),
+                                std::max<std::size_t>(1, n / kMinChunkTriangles));
     std::vector<Chunk> chunks(chunk_count);
     tbb::enumerable_thread_specific<TileBuffer> buffers(scene.samples, c.vp);
     arena.execute([&] {

@@ -329,8 +329,8 @@ bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, De
 
 // RowSpans (spans.h) on as many rows at once as there are 64-bit lanes: lane l walks rows l, l + N, l + 2N,
 // ..., its floor(E / d) and remainder stepped by N rows at a time with the same exact integer operations
-// as RowQuotient::next_row. Lanes past the block's rows wrap around harmlessly (vector integer
-// arithmetic is modular) and are never read.
+// as RowQuotient::next_row. Lanes past the block's rows compute rows below it (in range: a few steps
+// more), which no caller reads.
 void RowMasks(const RowEdges& edges, int width, int rows, std::uint64_t* masks) {
     using V = hn::Vec<DI>;
     const DI di;
