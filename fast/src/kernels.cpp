@@ -339,7 +339,7 @@ void RowMasks(const RowEdges& edges, int width, int rows, std::uint64_t* masks) 
     V quotient[3], remainder[3], step_quotient[3], step_remainder[3], divisor[3];
     int sign[3];
     for (int k = 0; k < 3; ++k) {
-        const std::int64_t p = edges.p[k], d = p > 0 ? p : p < 0 ? -p : 1;
+        const std::int64_t p = edges.p[k], d = column_divisor(p);
         sign[k] = p > 0 ? 1 : p < 0 ? -1 : 0;
         // Rows 0 to N - 1 for the lanes, then row N for the step of N rows.
         HWY_ALIGN std::int64_t q[HWY_MAX_BYTES / sizeof(std::int64_t)], r[HWY_MAX_BYTES / sizeof(std::int64_t)];

@@ -66,6 +66,12 @@ private:
     Int step_quotient_, step_remainder_;
 };
 
+// What an edge's column bound divides by: floor(q / |p|) for p != 0; q itself (d = 1) for p = 0.
+template <class Int>
+Int column_divisor(const Int& p) {
+    return p > 0 ? p : p < 0 ? Int(-p) : Int(1);
+}
+
 // Three edge functions along sample rows, E_k = p[k] i + q[k] at pixel column i, q[k] growing by
 // step[k] from row to row; a sample is covered where all three are >= 0 (the tie rule is in q). Each
 // edge covers a half-line of columns: i >= -floor(q / p) for p > 0, i <= floor(q / -p) for p < 0, all
@@ -96,9 +102,8 @@ public:
     }
 
 private:
-    // floor(q / |p|) for p != 0; q itself (d = 1) for p = 0.
     static RowQuotient<Int> row(const Int& p, const Int& q, const Int& step) {
-        return RowQuotient<Int>(q, step, p > 0 ? p : p < 0 ? Int(-p) : Int(1));
+        return RowQuotient<Int>(q, step, column_divisor(p));
     }
     int lo_, hi_;
     std::array<RowQuotient<Int>, 3> rows_;
