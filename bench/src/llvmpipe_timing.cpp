@@ -1,5 +1,7 @@
 #include "llvmpipe_timing.h"
 
+#include "timing.h"
+
 #include <rast/llvmpipe.h>
 
 #include <sys/socket.h>
@@ -8,7 +10,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -81,9 +82,7 @@ void close_all_but(int keep) {
         while (read_up_to(fd, &request, 1) == 1) {
             std::string reply;
             if (request == kDraw) {
-                const auto start = std::chrono::steady_clock::now();
-                llvmpipe.draw();
-                const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                const double seconds = seconds_of([&llvmpipe] { llvmpipe.draw(); });
                 reply = std::string(1, kTimed) + std::string(reinterpret_cast<const char*>(&seconds), sizeof seconds);
             } else if (request == kRead) {
                 const Framebuffer result = llvmpipe.read_ids();
