@@ -239,34 +239,25 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     return any != 0;
 }
 
-// The covered samples of each row as bits, asked for row by row from 0 (next()): given...
-struct GivenRuns {
-    const std::uint64_t* covered;
-    int r = 0;
-    std::uint64_t next() { return covered[r++]; }
-};
-
-// ...or found from integer edges that fit in 32 bits, in 32-bit lanes (twice as many per vector as the
-// depth test's), with all three edges in the registers.
-struct SmallEdgeRuns {
+// The covered samples of each row of a block as bits, from integer edges that fit in 32 bits, in 32-bit
+// lanes (twice as many per vector as the depth test's), with all three edges in the registers.
+HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint64_t* covered) {
     using DI32 = hn::ScalableTag<std::int32_t>;
-    SmallEdgeRuns(const SmallEdges& edges, const Block& b)
-        : width(b.width), in_block(b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1) {
-        const DI32 di;
-        for (int e = 0; e < 3; ++e) {
-            row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
-            step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(hn::Lanes(di))));
-            down[e] = hn::Set(di, edges.dy[e]);
-        }
+    const DI32 di;
+    const int lanes32 = static_cast<int>(hn::Lanes(di));
+    const std::uint64_t in_block = b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
+    hn::Vec<DI32> row[3], step[3], down[3];
+    for (int e = 0; e < 3; ++e) {
+        row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
+        step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(lanes32)));
+        down[e] = hn::Set(di, edges.dy[e]);
     }
-    std::uint64_t next() {
-        const DI32 di;
-        const int lanes32 = static_cast<int>(hn::Lanes(di));
-        std::uint64_t covered = 0;
+    for (int r = 0; r < b.rows; ++r) {
+        std::uint64_t bits = 0;
         auto v0 = row[0], v1 = row[1], v2 = row[2];
-        for (int k = 0; k < width; k += lanes32) {
+        for (int k = 0; k < b.width; k += lanes32) {
             // All three are >= 0 exactly when their bitwise or is > -1.
-            covered |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
+            bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
             v0 = hn::Add(v0, step[0]);
             v1 = hn::Add(v1, step[1]);
             v2 = hn::Add(v2, step[2]);
@@ -274,19 +265,16 @@ struct SmallEdgeRuns {
         for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
         // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
         // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
-        return covered & in_block;
+        covered[r] = bits & in_block;
     }
-    int width;
-    std::uint64_t in_block;
-    hn::Vec<DI32> row[3], step[3], down[3];
-};
+}
 
-// The depth test on the covered samples of each row, one run per row (its columns [first, last]), in
-// vectors from the run's first sample. py = j + sy and px = i + sx are stepped exactly (sums of integers
-// below 2^25 and multiples of 1/16), so they are the values DepthLoop computes. Runs is taken by value,
-// as DepthLoop takes its evaluator.
-template <bool kPerSample, class Runs>
-HWY_INLINE bool DepthOnRuns(const Block& b, Runs runs, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
+// The depth test on the covered samples of each row (covered[r]), one run per row (its columns
+// [first, last]), in vectors from the run's first sample. py = j + sy and px = i + sx are stepped exactly
+// (sums of integers below 2^25 and multiples of 1/16), so they are the values DepthLoop computes.
+template <bool kPerSample>
+HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+                            std::uint64_t* undecided) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes<kPerSample> lanes_test(p);
@@ -296,10 +284,9 @@ HWY_INLINE bool DepthOnRuns(const Block& b, Runs runs, const DepthPlane& p, Dept
     double py = double(b.j0) + b.sy;
     std::uint64_t any = 0;
     for (int r = 0; r < b.rows; ++r, py += 1) {
-        const std::uint64_t covered = runs.next();
         undecided[r] = 0;
-        if (covered == 0) continue;
-        const int first = std::countr_zero(covered), last = 63 - std::countl_zero(covered);
+        if (covered[r] == 0) continue;
+        const int first = std::countr_zero(covered[r]), last = 63 - std::countl_zero(covered[r]);
         const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, py), y0));
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         auto px = hn::Add(hn::Set(d, px_start + first), ramp);
@@ -317,14 +304,17 @@ HWY_INLINE bool DepthOnRuns(const Block& b, Runs runs, const DepthPlane& p, Dept
 
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
                std::uint64_t* undecided) {
-    const GivenRuns runs{covered};
-    return rows.err ? DepthOnRuns<true>(b, runs, p, rows, undecided) : DepthOnRuns<false>(b, runs, p, rows, undecided);
+    return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
+                    : DepthOnRuns<false>(b, covered, p, rows, undecided);
 }
 
+// The runs first, then the depth test on them: in one loop the edges' nine vectors and the depth test's
+// did not fit the 16 registers of AVX2 together, and the spills cost a tenth of the time on small triangles.
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                 std::uint64_t* undecided) {
-    const SmallEdgeRuns runs(edges, b);
-    return rows.err ? DepthOnRuns<true>(b, runs, p, rows, undecided) : DepthOnRuns<false>(b, runs, p, rows, undecided);
+    std::uint64_t covered[kRowLanes];
+    SmallEdgeRuns(edges, b, covered);
+    return DepthRuns(b, covered, p, rows, undecided);
 }
 
 // RowSpans (spans.h) on as many rows at once as there are 64-bit lanes: lane l walks rows l, l + N, l + 2N,
