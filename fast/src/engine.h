@@ -327,7 +327,7 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
 // depth(b, s, plane, rows, undecided) runs the z-buffer test on block b of sample index s and answers
 // whether it left samples undecided; those get the exact order.
 template <Fault F, class BlockDepth>
-void rasterize_blocks(const Placed& p, const Plane& pl, std::int32_t id, int i0, int i1, int j0, int j1,
+[[gnu::always_inline]] inline void rasterize_blocks(const Placed& p, const Plane& pl, std::int32_t id, int i0, int i1, int j0, int j1,
                       const TileRect& rect, TileBuffer& tile, const SceneView& scene, BlockDepth depth) {
     const Context& c = scene.c;
     if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return;

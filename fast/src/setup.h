@@ -39,13 +39,14 @@ struct Context {
     std::vector<std::int64_t> sx, sy;         // the offsets in fixed units
     double ox_min, ox_max, oy_min, oy_max;    // their extent
     std::int64_t sx_min, sx_max, sy_min, sy_max;  // and in fixed units
+    double unit;                              // the grid's spacing in pixels, 2^-bits
     double coordinate_limit;                  // kFixedRange in pixels
     bool fixed_fits;                          // the viewport itself is inside kFixedRange
 };
 
 template <Fault F>
 Context make_context(Viewport vp, int samples, Precision precision) {
-    Context c{vp, precision, subpixel_bits(precision), {}, {}, {}, 1, 0, 1, 0, 0, 0, 0, 0, 0, false};
+    Context c{vp, precision, subpixel_bits(precision), {}, {}, {}, 1, 0, 1, 0, 0, 0, 0, 0, 0, 0, false};
     for (SamplePoint o : sample_pattern(samples)) {
         if constexpr (F == Fault::integer_sample_positions) o = {o.x - 0.5, o.y - 0.5};
         c.offsets.push_back(o);
@@ -61,6 +62,7 @@ Context make_context(Viewport vp, int samples, Precision precision) {
     c.sx_max = *std::max_element(c.sx.begin(), c.sx.end());
     c.sy_min = *std::min_element(c.sy.begin(), c.sy.end());
     c.sy_max = *std::max_element(c.sy.begin(), c.sy.end());
+    c.unit = std::ldexp(1.0, -c.bits);
     c.coordinate_limit = std::ldexp(kFixedRange, -c.bits);
     c.fixed_fits = vp.width + 1 <= c.coordinate_limit && vp.height + 1 <= c.coordinate_limit;
     return c;
@@ -319,9 +321,8 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
 
 // What place() makes of the triangle that `s` records.
 inline Placed placed_of(const SmallFixed& s, const Context& c) {
-    const double unit = 1 / static_cast<double>(std::int64_t{1} << c.bits);  // exact: a power of two
     Placed p{{}, s.i_lo, s.i_hi, s.j_lo, s.j_hi, Path::fixed};
-    for (int k = 0; k < 3; ++k) p.v[k] = {s.x[k] * unit, s.y[k] * unit, s.z[k]};
+    for (int k = 0; k < 3; ++k) p.v[k] = {s.x[k] * c.unit, s.y[k] * c.unit, s.z[k]};
     return p;
 }
 
