@@ -240,8 +240,11 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
 }
 
 // The covered samples of each row of a block as bits, from integer edges that fit in 32 bits, in 32-bit
-// lanes (twice as many per vector as the depth test's), with all three edges in the registers.
-HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint64_t* covered) {
+// lanes (twice as many per vector as the depth test's), with all three edges in the registers: `vectors`
+// per row, kVectors of them when that is not 0 (a loop the compiler unrolls: a small triangle's rows need
+// one or two, and the loop's own instructions were as many as the evaluation's).
+template <int kVectors>
+HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, int vectors, std::uint64_t* covered) {
     using DI32 = hn::ScalableTag<std::int32_t>;
     const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
@@ -252,12 +255,13 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint
         step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(lanes32)));
         down[e] = hn::Set(di, edges.dy[e]);
     }
+    const int count = kVectors != 0 ? kVectors : vectors;
     for (int r = 0; r < b.rows; ++r) {
         std::uint64_t bits = 0;
         auto v0 = row[0], v1 = row[1], v2 = row[2];
-        for (int k = 0; k < b.width; k += lanes32) {
+        for (int k = 0; k < count; ++k) {
             // All three are >= 0 exactly when their bitwise or is > -1.
-            bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << k;
+            bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << (k * lanes32);
             v0 = hn::Add(v0, step[0]);
             v1 = hn::Add(v1, step[1]);
             v2 = hn::Add(v2, step[2]);
@@ -313,7 +317,11 @@ bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                 std::uint64_t* undecided) {
     std::uint64_t covered[kRowLanes];
-    SmallEdgeRuns(edges, b, covered);
+    const int lanes32 = static_cast<int>(hn::Lanes(hn::ScalableTag<std::int32_t>()));
+    const int vectors = (b.width + lanes32 - 1) / lanes32;
+    if (vectors == 1) SmallEdgeRuns<1>(edges, b, vectors, covered);
+    else if (vectors == 2) SmallEdgeRuns<2>(edges, b, vectors, covered);
+    else SmallEdgeRuns<0>(edges, b, vectors, covered);
     return DepthRuns(b, covered, p, rows, undecided);
 }
 
