@@ -113,7 +113,7 @@ constexpr Run kEmptyRun{0, -1};
 // d columns from the guess costs O(log d) calls of pred: along a triangle an edge's end moves little
 // from one row to the next.
 template <class Pred>
-int first_true(int lo, int hi, int guess, Pred pred) {
+[[gnu::always_inline]] inline int first_true(int lo, int hi, int guess, Pred pred) {
     if (lo > hi) return lo;
     // The answer lies in [below, above]: pred is false before below, and true at above unless above = hi + 1.
     std::int64_t below = lo, above = std::int64_t{hi} + 1;
