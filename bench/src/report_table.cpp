@@ -102,7 +102,7 @@ std::string format_table(const Report& report) {
     if (!report.scenes.empty()) {
         out += "\n### Scenes\n\n" + scenes_table(report.scenes);
         out += "\n### Speed\n\n"
-               "Wall time per render, median and range over the runs (the exact reference gets fewer). Samples/s\n"
+               "Wall time per render, median and range over the rounds. Samples/s\n"
                "counts the samples covered before the depth test. Ratios divide medians of this run: the\n"
                "reference's (one thread), and llvmpipe's on as many threads.\n\n" +
                speed_table(report.speed);

@@ -24,12 +24,4 @@ double seconds_of(Run&& run) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The wall time of each of `runs` calls of `run`.
-template <typename Run>
-std::vector<double> time_runs(Run&& run, std::size_t runs) {
-    std::vector<double> seconds;
-    for (std::size_t k = 0; k < runs; ++k) seconds.push_back(seconds_of(run));
-    return seconds;
-}
-
 }  // namespace rast::bench

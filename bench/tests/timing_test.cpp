@@ -19,13 +19,5 @@ TEST(Spread, MedianOfAnEvenCountIsTheMiddlePairsMean) { EXPECT_EQ(spread({4, 1, 
 
 TEST(Spread, RejectsNoRuns) { EXPECT_THROW(spread({}), std::invalid_argument); }
 
-TEST(TimeRuns, CallsOncePerRun) {
-    int calls = 0;
-    const auto seconds = time_runs([&] { ++calls; }, 5);
-    EXPECT_EQ(calls, 5);
-    ASSERT_EQ(seconds.size(), 5u);
-    for (const double s : seconds) EXPECT_GE(s, 0);
-}
-
 }  // namespace
 }  // namespace rast::bench
