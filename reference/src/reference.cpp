@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -376,6 +377,30 @@ RAST_FMA_CLONES std::uint64_t offer_run(ZBuffer& zbuffer, std::int32_t id, const
     return behind;
 }
 
+// The order in which render visits the triangles: tile by tile (tiles of 64 x 64 pixels in rows, a
+// triangle in the tile of its bounding box's first pixel), ids ascending within a tile. In id order, rast
+// bench's 100 000 small triangles land all over a 12 MB framebuffer and the reference waited mostly for
+// stored depths; tile by tile, the rows a triangle touches were mostly touched just before, and it is
+// about 1.8 times as fast. The z-buffer's (z, id) order is total, so the framebuffer does not depend on the
+// order of visits; only the counts of depth comparisons do. A counting sort: there are fewer tiles than
+// the framebuffer has samples.
+std::vector<std::size_t> tile_order(std::span<const detail::PixelBox> boxes, Viewport vp) {
+    constexpr std::size_t kTile = 64;
+    const std::size_t tiles_x = (static_cast<std::size_t>(vp.width) + kTile - 1) / kTile;
+    const std::size_t tiles = tiles_x * ((static_cast<std::size_t>(vp.height) + kTile - 1) / kTile);
+    const auto tile_of = [tiles_x](const detail::PixelBox& b) {
+        if (b.empty()) return std::size_t{0};
+        return static_cast<std::size_t>(b.j0) / kTile * tiles_x + static_cast<std::size_t>(b.i0) / kTile;
+    };
+    // next[t + 1] counts tile t's triangles; summed, next[t] is where tile t's next one goes.
+    std::vector<std::size_t> next(tiles + 1, 0);
+    for (const detail::PixelBox& b : boxes) ++next[tile_of(b) + 1];
+    std::partial_sum(next.begin(), next.end(), next.begin());
+    std::vector<std::size_t> order(boxes.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) order[next[tile_of(boxes[k])]++] = k;
+    return order;
+}
+
 // A framebuffer without storage: only its index layout.
 Framebuffer layout(Viewport vp, int samples) {
     Framebuffer fb;
@@ -433,14 +458,17 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
     Framebuffer fb(scene.viewport, scene.samples);
     ZBuffer zbuffer(scene, fb, stats);
 
-    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
+    std::vector<detail::PixelBox> boxes;
+    boxes.reserve(scene.triangles.size());
+    for (const Triangle& t : scene.triangles) boxes.push_back(detail::pixel_box(t, scene.viewport));
+    for (const std::size_t k : tile_order(boxes, scene.viewport)) {
         const Triangle& t = scene.triangles[k];
         const auto ccw = rasterizer.prepare(t);
         if (!ccw) continue;
         const auto id = static_cast<std::int32_t>(k);
         std::optional<detail::BoundedPlane> plane;  // made at the first covered run: many tiny triangles have none
         bool plane_made = false;
-        rasterizer.for_each_run(*ccw, detail::pixel_box(t, scene.viewport), pattern, [&](int j, int s, Run run) {
+        rasterizer.for_each_run(*ccw, boxes[k], pattern, [&](int j, int s, Run run) {
             stats.samples_covered += static_cast<std::uint64_t>(run.size());
             if (!plane_made) {
                 plane = detail::BoundedPlane::make(t);
