@@ -527,22 +527,22 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         const std::vector<SmallFixed>& fixed = chunk.fixed_bins[index];
         const std::vector<SmallTriangle>& small = chunk.small_bins[index];
         const std::vector<BigEntry>& big = chunk.big_bins[index];
-        // The three lists are in id order; merged, the tile composes all its triangles in id order.
+        // The three lists are in id order; merged, the tile composes all its triangles in id order. The
+        // common lane's triangles before the next of the other two go in one tight loop.
         for (std::size_t f = 0, a = 0, b = 0;;) {
-            const std::int32_t next_fixed = f < fixed.size() ? fixed[f].id : kEnd;
             const std::int32_t next_small = a < small.size() ? small[a].id : kEnd;
             const std::int32_t next_big = b < big.size() ? big[b].id : kEnd;
-            if (next_fixed < next_small && next_fixed < next_big) {
-                rasterize_small<F>(fixed[f++], rect, tile, scene);
-            } else if (next_small < next_big) {
+            const std::int32_t next_other = std::min(next_small, next_big);
+            for (; f < fixed.size() && fixed[f].id < next_other; ++f)
+                rasterize_small<F>(fixed[f], rect, tile, scene);
+            if (next_other == kEnd) break;
+            if (next_small < next_big) {
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;
-            } else if (next_big != kEnd) {
+            } else {
                 if (b + 1 < big.size()) prefetch(chunk.big[big[b + 1].setup]);
                 rasterize<F>(chunk.big[big[b].setup], big[b].id, rect, tile, scene);
                 ++b;
-            } else {
-                break;
             }
         }
     }
