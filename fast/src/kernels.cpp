@@ -288,9 +288,10 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
     double py = double(b.j0) + b.sy;
     std::uint64_t any = 0;
     for (int r = 0; r < b.rows; ++r, py += 1) {
+        const std::uint64_t bits = covered[r];
         undecided[r] = 0;
-        if (covered[r] == 0) continue;
-        const int first = std::countr_zero(covered[r]), last = 63 - std::countl_zero(covered[r]);
+        if (bits == 0) continue;
+        const int first = std::countr_zero(bits), last = 63 - std::countl_zero(bits);
         const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, py), y0));
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         auto px = hn::Add(hn::Set(d, px_start + first), ramp);

@@ -27,7 +27,8 @@ struct Stats {
     std::uint64_t samples_covered = 0;       // fragments, before the depth test
     std::uint64_t depth_tests = 0;           // comparisons against an already stored fragment
     std::uint64_t depth_exact = 0;
-    std::uint64_t depth_nearest_exact = 0;   // covered samples whose depth needed exact rounding
+    std::uint64_t depth_nearest_exact = 0;   // samples that reached the z-buffer test (not certainly behind
+                                             // the stored depth) whose depth needed exact rounding
 
     Stats& operator+=(const Stats& o);
 };
