@@ -240,11 +240,11 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
 }
 
 // The covered samples of each row of a block as bits, from integer edges that fit in 32 bits, in 32-bit
-// lanes (twice as many per vector as the depth test's), with all three edges in the registers: `vectors`
-// per row, kVectors of them when that is not 0 (a loop the compiler unrolls: a small triangle's rows need
-// one or two, and the loop's own instructions were as many as the evaluation's).
+// lanes (twice as many per vector as the depth test's), with all three edges in the registers. kVectors,
+// when not 0, is the number of vectors a row takes (a loop the compiler unrolls: a small triangle's rows
+// need one or two, and the loop's own instructions were as many as the evaluation's).
 template <int kVectors>
-HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, int vectors, std::uint64_t* covered) {
+HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint64_t* covered) {
     using DI32 = hn::ScalableTag<std::int32_t>;
     const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
@@ -255,7 +255,7 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, int vecto
         step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(lanes32)));
         down[e] = hn::Set(di, edges.dy[e]);
     }
-    const int count = kVectors != 0 ? kVectors : vectors;
+    const int count = kVectors != 0 ? kVectors : (b.width + lanes32 - 1) / lanes32;
     for (int r = 0; r < b.rows; ++r) {
         std::uint64_t bits = 0;
         auto v0 = row[0], v1 = row[1], v2 = row[2];
@@ -319,10 +319,9 @@ bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, De
                 std::uint64_t* undecided) {
     std::uint64_t covered[kRowLanes];
     const int lanes32 = static_cast<int>(hn::Lanes(hn::ScalableTag<std::int32_t>()));
-    const int vectors = (b.width + lanes32 - 1) / lanes32;
-    if (vectors == 1) SmallEdgeRuns<1>(edges, b, vectors, covered);
-    else if (vectors == 2) SmallEdgeRuns<2>(edges, b, vectors, covered);
-    else SmallEdgeRuns<0>(edges, b, vectors, covered);
+    if (b.width <= lanes32) SmallEdgeRuns<1>(edges, b, covered);
+    else if (b.width <= 2 * lanes32) SmallEdgeRuns<2>(edges, b, covered);
+    else SmallEdgeRuns<0>(edges, b, covered);
     return DepthRuns(b, covered, p, rows, undecided);
 }
 
