@@ -380,10 +380,10 @@ RAST_FMA_CLONES std::uint64_t offer_run(ZBuffer& zbuffer, std::int32_t id, const
 // The order in which render visits the triangles: tile by tile (tiles of 64 x 64 pixels in rows, a
 // triangle in the tile of its bounding box's first pixel), ids ascending within a tile. In id order, rast
 // bench's 100 000 small triangles land all over a 12 MB framebuffer and the reference waited mostly for
-// stored depths; tile by tile, the rows a triangle touches were mostly touched just before, and it is
-// about 1.8 times as fast. The z-buffer's (z, id) order is total, so the framebuffer does not depend on the
-// order of visits; only the counts of depth comparisons and exact roundings do. A counting sort: there are
-// fewer tiles than the framebuffer has samples.
+// stored depths; tile by tile, the rows a triangle touches were mostly touched just before, and they
+// take about two thirds of the time (micro bench, 380 -> 250 ms). The z-buffer's (z, id) order is total,
+// so the framebuffer does not depend on the order of visits; only the counts of depth comparisons and
+// exact roundings do. A counting sort: there are fewer tiles than the framebuffer has samples.
 std::vector<std::size_t> tile_order(std::span<const detail::PixelBox> boxes, Viewport vp) {
     constexpr std::size_t kTile = 64;
     const std::size_t tiles_x = (static_cast<std::size_t>(vp.width) + kTile - 1) / kTile;
