@@ -164,20 +164,25 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
         contenders.push_back(
             {"reference", 1, [&scene] { return seconds_of([&] { reference::render(scene); }); }, {}, {}});
     std::vector<ErrorRow> rows;
-    // Each mode's result, rendered once untimed (also the warm-up), then timed into it, kept as llvmpipe
-    // draws into its context's.
+    // Each mode's result, rendered once untimed, then timed into it by a Renderer per thread count that
+    // keeps its working memory from round to round (warmed up by one untimed render), as llvmpipe draws
+    // into its context's with the context's memory.
     std::vector<Framebuffer> results;
     results.reserve(kModes.size());
     for (const fast::Precision mode : kModes) {
         progress << ", " << fast::name(mode) << std::flush;
         Framebuffer& result = results.emplace_back(fast::render(scene, {mode, 1}));
         rows.push_back(error_row(s.info, std::string(fast::name(mode)), compare_buffers(exact, result)));
-        for (const int threads : thread_counts)
+        for (const int threads : thread_counts) {
+            const fast::Options options{mode, threads};
+            auto renderer = std::make_shared<fast::Renderer>();
+            renderer->render(scene, result, options);
             contenders.push_back({std::string(fast::name(mode)), threads,
-                                  [&scene, &result, mode, threads] {
-                                      return seconds_of([&] { fast::render(scene, result, {mode, threads}); });
+                                  [&scene, &result, renderer, options] {
+                                      return seconds_of([&] { renderer->render(scene, result, options); });
                                   },
                                   {}, {}});
+        }
     }
     // llvmpipe in child processes, one per thread count, each kept or skipped on its own; the first
     // thread count's draw gives the error (untimed, it is the only one).

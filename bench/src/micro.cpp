@@ -50,16 +50,17 @@ void fast_path(benchmark::State& state, SceneSpec spec, fast::Precision precisio
     const Scene& scene = scene_for(spec);
     const fast::Options options{precision, threads};
     Framebuffer fb;
+    fast::Renderer renderer;
     try {
-        fast::render(scene, fb, options);  // warm-up, and a clear skip for a scene the engine rejects
+        renderer.render(scene, fb, options);  // warm-up, and a clear skip for a scene the engine rejects
         set_rates(state, spec);
     } catch (const std::exception& e) {
         state.SkipWithError(e.what());
         return;
     }
-    // Into the kept framebuffer, as llvmpipe draws into its context's.
+    // Into the kept framebuffer, with the kept working memory, as llvmpipe draws into its context's.
     for (auto _ : state) {
-        fast::render(scene, fb, options);
+        renderer.render(scene, fb, options);
         benchmark::DoNotOptimize(fb.ids.data());
     }
 }

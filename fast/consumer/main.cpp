@@ -1,4 +1,5 @@
-// Renders two triangles that split a 4 x 4 square along its diagonal and checks who owns which pixel.
+// Renders two triangles that split a 4 x 4 square along its diagonal and checks who owns which pixel,
+// with render() and with a Renderer.
 #include <rast/fast.h>
 
 #include <cstdio>
@@ -22,6 +23,14 @@ int main() {
             std::printf("pixel (%d, %d): id %d, expected %d\n", e.i, e.j, fb.id(e.i, e.j), e.id);
             ++failures;
         }
+    }
+    // The same frame again, from a Renderer that keeps its working memory.
+    rast::fast::Renderer renderer;
+    rast::Framebuffer again;
+    renderer.render(scene, again, {.threads = 2});
+    if (again.ids != fb.ids) {
+        std::printf("a Renderer's frame differs from render()'s\n");
+        ++failures;
     }
     std::printf("%s\n", failures == 0 ? "consumer: ok" : "consumer: FAILED");
     return failures == 0 ? 0 : 1;

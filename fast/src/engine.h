@@ -11,7 +11,6 @@
 #include <rast/fast_faults.h>
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -19,6 +18,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -188,14 +188,18 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
 
 // One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
 // kRowLanes of padding lets the last row's vector loads run past its end. Sized to the viewport's
-// largest tile (a small viewport's is small) and reused from tile to tile.
+// largest tile (a small viewport's is small) and reused from tile to tile, and by a Workspace from
+// render to render.
 struct TileBuffer {
-    TileBuffer(int samples, Viewport vp)
-        : cols(std::min(kTile, vp.width)),
-          rows(std::min(kTile, vp.height)),
-          size(static_cast<std::size_t>(samples) * rows * cols),
-          z(size + kRowLanes, std::numeric_limits<double>::infinity()),
-          ids(size + kRowLanes, Framebuffer::kNoTriangle) {}
+    // For a render of this sample count and viewport: storage kept when large enough.
+    void fit(int samples, Viewport vp) {
+        cols = std::min(kTile, vp.width);
+        rows = std::min(kTile, vp.height);
+        size = static_cast<std::size_t>(samples) * rows * cols;
+        z.resize(size + kRowLanes, std::numeric_limits<double>::infinity());
+        ids.resize(size + kRowLanes, Framebuffer::kNoTriangle);
+        planes = ExactPlanes();  // its planes are named by the ids of the last render's scene
+    }
     // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
     void clear() {
         std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
@@ -244,8 +248,8 @@ struct TileBuffer {
     std::size_t at(int s, int row, int col) const {
         return (static_cast<std::size_t>(s) * rows + row) * cols + col;
     }
-    int cols, rows;  // the row stride and rows per sample plane
-    std::size_t size;
+    int cols = 0, rows = 0;  // the row stride and rows per sample plane
+    std::size_t size = 0;
     std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample (admit() allocates it)
     std::vector<std::int64_t> ids;
     double stored_err = 0;  // an error bound of every depth stored since clear()
@@ -446,9 +450,16 @@ struct Chunk {
 
 template <Fault F>
 void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, int tiles_x, int tiles) {
-    chunk.fixed_bins.resize(static_cast<std::size_t>(tiles));
-    chunk.small_bins.resize(static_cast<std::size_t>(tiles));
-    chunk.big_bins.resize(static_cast<std::size_t>(tiles));
+    // Emptied, keeping the bins' storage of the last render (Workspace).
+    chunk.non_finite.reset();
+    chunk.big.clear();
+    const auto empty_bins = [tiles](auto& bins) {
+        bins.resize(static_cast<std::size_t>(tiles));
+        for (auto& bin : bins) bin.clear();
+    };
+    empty_bins(chunk.fixed_bins);
+    empty_bins(chunk.small_bins);
+    empty_bins(chunk.big_bins);
     const bool lean = is_fixed(scene.c.precision) && scene.c.fixed_fits;
     if (lean) {
         // Room for a uniform spread with some slack, so that most bins never reallocate and copy; pages
@@ -575,8 +586,17 @@ inline void fit(Framebuffer& fb, Viewport vp, int samples) {
     fb.depth.resize(size);
 }
 
+// What a render allocates, kept by a Renderer for the next one: the chunks' bins, a tile buffer per
+// thread and the threads' arena (Renderer, fast.h, says why).
+struct Workspace {
+    std::vector<Chunk> chunks;
+    std::vector<TileBuffer> tiles;  // one per thread of the arena, by its index there
+    std::unique_ptr<tbb::task_arena> arena;
+    int arena_threads = -1;  // Options::threads the arena was made for
+};
+
 template <Fault F>
-void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
+void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, Workspace& ws) {
     validate(scene.viewport, scene.samples);
     if (options.threads < 0)
         throw std::invalid_argument("rast::fast: thread count " + std::to_string(options.threads) +
@@ -589,7 +609,12 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     const int tiles_x = (c.vp.width + kTile - 1) / kTile, tiles_y = (c.vp.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
 
-    tbb::task_arena arena(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
+    if (!ws.arena || ws.arena_threads != options.threads) {
+        const int concurrency = options.threads == 0 ? int{tbb::task_arena::automatic} : options.threads;
+        ws.arena = std::make_unique<tbb::task_arena>(concurrency);
+        ws.arena_threads = options.threads;
+    }
+    tbb::task_arena& arena = *ws.arena;
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
     // its triangles in id order, whatever the number of chunks. Binning sets up the big triangles, so
     // a scene of a few thousand of them already needs it shared out: rast bench's 2000 huge ones (wide
@@ -606,8 +631,10 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
         workers == 1 ? 1
                      : std::min(workers * std::clamp<std::size_t>(n / (kChunkTriangles * workers), 1, 4),
                                 std::max<std::size_t>(1, n / kMinChunkTriangles));
-    std::vector<Chunk> chunks(chunk_count);
-    tbb::enumerable_thread_specific<TileBuffer> buffers(scene.samples, c.vp);
+    std::vector<Chunk>& chunks = ws.chunks;
+    chunks.resize(chunk_count);
+    ws.tiles.resize(workers);
+    for (TileBuffer& tile : ws.tiles) tile.fit(scene.samples, c.vp);
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count, 1), [&](const auto& r) {
             for (std::size_t k = r.begin(); k != r.end(); ++k)
@@ -621,7 +648,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb) {
     fit(fb, c.vp, scene.samples);
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const auto& r) {
-            TileBuffer& tile = buffers.local();
+            TileBuffer& tile = ws.tiles.at(static_cast<std::size_t>(tbb::this_task_arena::current_thread_index()));
             for (int index = r.begin(); index != r.end(); ++index) {
                 const int i0 = index % tiles_x * kTile, j0 = index / tiles_x * kTile;
                 const TileRect rect{i0, std::min(i0 + kTile, c.vp.width) - 1, j0, std::min(j0 + kTile, c.vp.height) - 1};

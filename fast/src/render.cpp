@@ -7,12 +7,21 @@ namespace rast::fast {
 
 Framebuffer render(const Scene& scene, const Options& options) {
     Framebuffer fb;
-    detail::render_scene<Fault::none>(scene, options, fb);
+    render(scene, fb, options);
     return fb;
 }
 
 void render(const Scene& scene, Framebuffer& target, const Options& options) {
-    detail::render_scene<Fault::none>(scene, options, target);
+    Renderer().render(scene, target, options);
+}
+
+Renderer::Renderer() : workspace_(std::make_unique<detail::Workspace>()) {}
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+Renderer::~Renderer() = default;
+
+void Renderer::render(const Scene& scene, Framebuffer& target, const Options& options) {
+    detail::render_scene<Fault::none>(scene, options, target, *workspace_);
 }
 
 std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int samples, Precision precision) {

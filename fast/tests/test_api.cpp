@@ -155,6 +155,52 @@ TEST(Api, RendersIntoAFramebufferOfAnotherSize) {
     expect_corner_only(target, vp);
 }
 
+// Two triangles over the same pixels at depths `near` (id 1) and `far` (id 0) one ulp apart: too close
+// for the double filter, so the exact comparison decides every sample.
+Scene near_tie_scene(double far, double near) {
+    Scene scene;
+    scene.viewport = {8, 8};
+    scene.triangles.push_back({{{{1, 1, far}, {7, 1, far}, {1, 7, far}}}});
+    scene.triangles.push_back({{{{1, 1, near}, {7, 1, near}, {1, 7, near}}}});
+    return scene;
+}
+
+// A Renderer keeps its memory from call to call, never what it decided: the exact planes it built for
+// ids 0 and 1 of one scene would tie them again in the next, whose ids 0 and 1 are different triangles.
+TEST(Api, ARendererForgetsTheLastScenesTriangles) {
+    Renderer renderer;
+    Framebuffer target;
+    renderer.render(near_tie_scene(0.5, 0.5), target);
+    EXPECT_EQ(target.id(2, 2), 0) << "equal depths: the lower id";
+    renderer.render(near_tie_scene(std::nextafter(0.5, 1.0), 0.5), target);
+    EXPECT_EQ(target.id(2, 2), 1) << "the nearer one";
+    EXPECT_EQ(target.depth[target.index(2, 2)], 0.5);
+}
+
+// One Renderer through scenes of other sizes, sample counts, precisions and thread counts, each
+// rendered as a fresh call renders it.
+TEST(Api, ARendererRendersEachSceneAsAFreshCallDoes) {
+    Renderer renderer;
+    Framebuffer target;
+    const Viewport viewports[] = {{130, 70}, {8, 8}, {64, 200}};
+    int step = 0;
+    for (const Precision precision : testing::kAllPrecisions)
+        for (const int samples : {1, 4})
+            for (const int threads : {1, 2}) {
+                Scene scene;
+                scene.viewport = viewports[step++ % 3];
+                scene.samples = samples;
+                for (int k = 0; k < 40; ++k) {
+                    const double x = 3.0 * k, y = 1.5 * k, z = 0.25 + (k % 7) / 8.0;
+                    scene.triangles.push_back({{{{x, y, z}, {x + 40, y + 3, z}, {x + 5, y + 50, 1 - z}}}});
+                }
+                renderer.render(scene, target, {precision, threads});
+                const Framebuffer fresh = render(scene, {precision, threads});
+                EXPECT_EQ(target.ids, fresh.ids) << name(precision) << ", " << samples << " samples, " << threads;
+                EXPECT_EQ(target.depth, fresh.depth) << name(precision) << ", " << samples << " samples";
+            }
+}
+
 TEST(Api, InvalidInputLeavesTheTargetUntouched) {
     Scene scene = corner_scene({4, 2});
     scene.triangles[0].v[1].x = std::numeric_limits<double>::quiet_NaN();

@@ -24,7 +24,8 @@ template <Fault F>
 struct Render {
     static Framebuffer run(const Scene& scene, const Options& options) {
         Framebuffer fb;
-        detail::render_scene<F>(scene, options, fb);
+        detail::Workspace workspace;
+        detail::render_scene<F>(scene, options, fb, workspace);
         return fb;
     }
 };
