@@ -49,9 +49,7 @@ inline void validate(const Triangle& t, std::size_t id) {
 
 inline std::uint64_t span_bits(int from, int to, int i0) {
     if (from > to) return 0;
-    const int n = to - from + 1;
-    const std::uint64_t run = n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
-    return run << (from - i0);
+    return first_bits(to - from + 1) << (from - i0);
 }
 
 // The injected bug of the float modes: E stepped along the row by repeated subtraction, which
@@ -60,7 +58,7 @@ template <class T>
 std::uint64_t float_row_accumulated(const Setup& t, const Context& c, int j, int s, int i0, int n) {
     const T py = T(j + c.offsets[s].y);
     const T sx = T(c.offsets[s].x);
-    std::uint64_t covered = n >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+    std::uint64_t covered = first_bits(n);
     for (const FloatEdge& f : t.flt) {
         const T d3 = T(f.d3);
         T value = T(T(f.d1) * T(py - T(f.ay))) - d3 * (T(i0 + sx) - T(f.ax));

@@ -12,6 +12,7 @@
 #include <bit>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace rast::fast::detail::HWY_NAMESPACE {
@@ -248,7 +249,7 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint
     using DI32 = hn::ScalableTag<std::int32_t>;
     const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
-    const std::uint64_t in_block = b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
+    const std::uint64_t in_block = first_bits(b.width);
     hn::Vec<DI32> row[3], step[3], down[3];
     for (int e = 0; e < 3; ++e) {
         row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
@@ -309,8 +310,9 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
 
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
                std::uint64_t* undecided) {
-    return rows.err ? DepthOnRuns<true>(b, covered, p, rows, undecided)
-                    : DepthOnRuns<false>(b, covered, p, rows, undecided);
+    return with_stored_bounds(rows, [&](auto per_sample) {
+        return DepthOnRuns<per_sample>(b, covered, p, rows, undecided);
+    });
 }
 
 // The runs first, then the depth test on them: in one loop the edges' nine vectors and the depth test's
@@ -415,10 +417,19 @@ void CoverageBlock(const Block& b, const Coverage& c, std::uint64_t* covered) {
     with_evaluator(b, c, [&](auto& ev) { CoverageLoop(b, ev, covered); });
 }
 
+// Integer edges go through their row masks and DepthRuns, as the fixed path's own calls (depth_runs,
+// depth_small) do, rather than a fused loop of their own that no path would run.
 bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, DepthRows rows,
                 std::uint64_t* undecided) {
     return with_evaluator(b, c, [&](auto& ev) {
-        return rows.err ? DepthLoop<true>(b, ev, p, rows, undecided) : DepthLoop<false>(b, ev, p, rows, undecided);
+        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(ev)>, FixedEdges>) {
+            std::uint64_t covered[kRowLanes];
+            CoverageLoop(b, ev, covered);
+            return DepthRuns(b, covered, p, rows, undecided);
+        } else {
+            return with_stored_bounds(
+                rows, [&](auto per_sample) { return DepthLoop<per_sample>(b, ev, p, rows, undecided); });
+        }
     });
 }
 

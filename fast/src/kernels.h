@@ -7,10 +7,16 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace rast::fast::detail {
 
 inline constexpr int kRowLanes = 64;
+
+// The row mask of the first n samples, n in [0, kRowLanes] (a shift by 64 would be undefined).
+inline std::uint64_t first_bits(int n) {
+    return n >= kRowLanes ? ~std::uint64_t{0} : (std::uint64_t{1} << n) - 1;
+}
 
 // Samples (i + sx, j + sy) for pixels i in [i0, i0 + width), rows j in [j0, j0 + rows); width, rows <= 64.
 struct Block {
@@ -57,6 +63,13 @@ struct DepthRows {
     std::int64_t* ids;
     std::ptrdiff_t stride;
 };
+
+// call(std::bool_constant<kPerSample>{}): a depth test instantiated for whether rows keeps a bound per
+// stored depth.
+template <class Call>
+auto with_stored_bounds(const DepthRows& rows, Call call) {
+    return rows.err ? call(std::true_type{}) : call(std::false_type{});
+}
 
 // The integer edge functions of Coverage::Kind::fixed, for a triangle whose values at every sample of
 // the block fit in 32 bits: E at (i0, j0), and its steps per column and per row.

@@ -43,7 +43,7 @@ inline std::uint64_t fixed_row_coverage(const std::int64_t* e, const std::int64_
 // Row r of block b as Coverage defines it.
 inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
     switch (cov.kind) {
-        case Coverage::Kind::all: return b.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << b.width) - 1;
+        case Coverage::Kind::all: return first_bits(b.width);
         case Coverage::Kind::masks: return cov.masks[r];
         case Coverage::Kind::fixed: return fixed_row_coverage(cov.e, cov.dx, cov.dy, b.width, r);
         case Coverage::Kind::float32: return float_row_coverage<float>(b, cov, r);
@@ -86,8 +86,9 @@ template <bool kPerSample, class RowMask>
 template <class RowMask>
 bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, DepthRows rows,
                        std::uint64_t* undecided) {
-    return rows.err ? depth_rows_scalar<true>(b, row_mask, p, rows, undecided)
-                    : depth_rows_scalar<false>(b, row_mask, p, rows, undecided);
+    return with_stored_bounds(rows, [&](auto per_sample) {
+        return depth_rows_scalar<per_sample>(b, row_mask, p, rows, undecided);
+    });
 }
 
 inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, DepthRows rows,

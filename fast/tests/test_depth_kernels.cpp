@@ -1,0 +1,177 @@
+// The SIMD depth tests (depth_block for every coverage kind, depth_runs, depth_small) against the scalar
+// one of scalar.h, sample by sample, on each SIMD target: the same stored depths, bounds and ids
+// afterwards, and the same samples left undecided.
+#include "kernels.h"
+#include "scalar.h"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace rast::fast::detail {
+namespace {
+
+// A tile's rows with a vector of padding, as TileBuffer keeps them.
+struct Rows {
+    static constexpr std::ptrdiff_t kStride = kRowLanes;
+    std::vector<double> z, err;
+    std::vector<std::int64_t> ids;
+    bool per_sample = false;
+    DepthRows view() { return {z.data(), per_sample ? err.data() : nullptr, ids.data(), kStride}; }
+};
+
+// Stored depths around the plane's at the block's samples: some empty, some equal to it (undecided
+// within the bounds), most clearly nearer or farther.
+Rows random_rows(std::mt19937_64& rng, const Block& b, const DepthPlane& p, bool per_sample) {
+    Rows rows;
+    const std::size_t size = static_cast<std::size_t>(Rows::kStride) * kRowLanes + kRowLanes;
+    rows.z.assign(size, std::numeric_limits<double>::infinity());
+    rows.err.assign(size, 0);
+    rows.ids.assign(size, -1);
+    rows.per_sample = per_sample;
+    std::uniform_int_distribution<int> kind(0, 9);
+    std::uniform_real_distribution<double> offset(-0.01, 0.01);
+    for (int r = 0; r < b.rows; ++r)
+        for (int k = 0; k < b.width; ++k) {
+            const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
+            const int what = kind(rng);
+            if (what == 0) continue;  // empty
+            const double px = double(b.i0 + k) + b.sx, py = double(b.j0 + r) + b.sy;
+            const double z = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+            rows.z[at] = what <= 3 ? z : z + offset(rng);
+            rows.err[at] = per_sample ? p.stored_err * (what % 2 == 0 ? 1 : 0.5) : 0;
+            rows.ids[at] = 1000 + what;
+        }
+    return rows;
+}
+
+Block random_block(std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> side(1, kRowLanes), origin(0, 1000), sixteenth(0, 15);
+    return {origin(rng), origin(rng), side(rng), side(rng), sixteenth(rng) / 16.0, sixteenth(rng) / 16.0};
+}
+
+DepthPlane random_plane(std::mt19937_64& rng, const Block& b) {
+    std::uniform_real_distribution<double> unit(0, 1), slope(-0.01, 0.01);
+    return {unit(rng), slope(rng), double(b.i0), slope(rng), double(b.j0), 1e-12, 1e-12, 7};
+}
+
+// Integer edges of a random triangle around the block, 32-bit sized: |dx|, |dy| < 2^12 and values within
+// 2^31 over the block, so that depth_small can take them too.
+Coverage random_fixed(std::mt19937_64& rng, const Block& b) {
+    std::uniform_int_distribution<std::int64_t> step(-4095, 4095);
+    std::uniform_int_distribution<int> col(0, b.width - 1), row(0, b.rows - 1);
+    Coverage c;
+    c.kind = Coverage::Kind::fixed;
+    for (int k = 0; k < 3; ++k) {
+        c.dx[k] = step(rng);
+        c.dy[k] = step(rng);
+        // Zero at a random sample of the block, moved a little towards the inside.
+        c.e[k] = -(c.dx[k] * col(rng) + c.dy[k] * row(rng)) + 2000;
+    }
+    return c;
+}
+
+// Float edges of a random counter-clockwise triangle that overlaps the block.
+Coverage random_float(std::mt19937_64& rng, const Block& b, bool single) {
+    std::uniform_real_distribution<double> x(b.i0 - 8.0, b.i0 + b.width + 8.0), y(b.j0 - 8.0, b.j0 + b.rows + 8.0);
+    double vx[3], vy[3];
+    for (int k = 0; k < 3; ++k) {
+        vx[k] = x(rng);
+        vy[k] = y(rng);
+    }
+    if ((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]) < 0) {
+        std::swap(vx[1], vx[2]);
+        std::swap(vy[1], vy[2]);
+    }
+    Coverage c;
+    c.kind = single ? Coverage::Kind::float32 : Coverage::Kind::float64;
+    const auto in_type = [single](double v) { return single ? double(float(v)) : v; };
+    for (int k = 0; k < 3; ++k) {
+        const int n = (k + 1) % 3;
+        c.ax[k] = in_type(vx[k]);
+        c.ay[k] = in_type(vy[k]);
+        c.d1[k] = in_type(in_type(vx[n]) - c.ax[k]);
+        c.d3[k] = in_type(in_type(vy[n]) - c.ay[k]);
+        c.inclusive[k] = k != 1;
+    }
+    return c;
+}
+
+// One run per row, as the wide path's spans give them.
+Coverage random_masks(std::mt19937_64& rng, const Block& b, std::uint64_t* masks) {
+    for (int r = 0; r < b.rows; ++r) {
+        std::uniform_int_distribution<int> col(0, b.width);
+        int from = col(rng), to = col(rng);
+        if (from > to) std::swap(from, to);
+        masks[r] = first_bits(to) & ~first_bits(from);
+    }
+    Coverage c;
+    c.kind = Coverage::Kind::masks;
+    c.masks = masks;
+    return c;
+}
+
+void expect_same(Rows& got, Rows& want, const std::uint64_t* got_open, const std::uint64_t* want_open,
+                 const Block& b, const char* what) {
+    for (int r = 0; r < b.rows; ++r) ASSERT_EQ(got_open[r], want_open[r]) << what << " row " << r;
+    ASSERT_EQ(got.ids, want.ids) << what;
+    ASSERT_EQ(got.z, want.z) << what;
+    if (got.per_sample) {
+        ASSERT_EQ(got.err, want.err) << what;
+    }
+}
+
+TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        std::mt19937_64 rng(20261124);
+        int undecided_blocks = 0, written_blocks = 0;
+        for (int trial = 0; trial < 2000; ++trial) {
+            const Block b = random_block(rng);
+            const DepthPlane p = random_plane(rng, b);
+            const bool per_sample = trial % 2 == 1;
+            std::uint64_t masks[kRowLanes];
+            const int kind = trial % 5;
+            const Coverage cov = kind == 0   ? Coverage{}
+                                 : kind == 1 ? random_fixed(rng, b)
+                                 : kind == 2 ? random_masks(rng, b, masks)
+                                             : random_float(rng, b, kind == 3);
+            const Rows start = random_rows(rng, b, p, per_sample);
+            Rows want = start, got = start;
+            std::uint64_t want_open[kRowLanes], got_open[kRowLanes];
+            const bool want_any = depth_block_scalar(b, cov, p, want.view(), want_open);
+            ASSERT_EQ(depth_block(b, cov, p, got.view(), got_open), want_any) << "trial " << trial;
+            expect_same(got, want, got_open, want_open, b, "depth_block");
+            undecided_blocks += want_any;
+            written_blocks += want.ids != start.ids;
+            if (cov.kind != Coverage::Kind::fixed && cov.kind != Coverage::Kind::masks) continue;
+            // The same rows as runs, and the integer edges in 32-bit lanes.
+            std::uint64_t covered[kRowLanes];
+            for (int r = 0; r < b.rows; ++r) covered[r] = row_coverage(b, cov, r);
+            Rows runs = start;
+            ASSERT_EQ(depth_runs(b, covered, p, runs.view(), got_open), want_any) << "trial " << trial;
+            expect_same(runs, want, got_open, want_open, b, "depth_runs");
+            if (cov.kind != Coverage::Kind::fixed) continue;
+            SmallEdges small;
+            for (int k = 0; k < 3; ++k) {
+                small.e[k] = static_cast<std::int32_t>(cov.e[k]);
+                small.dx[k] = static_cast<std::int32_t>(cov.dx[k]);
+                small.dy[k] = static_cast<std::int32_t>(cov.dy[k]);
+            }
+            Rows lanes = start;
+            ASSERT_EQ(depth_small(b, small, p, lanes.view(), got_open), want_any) << "trial " << trial;
+            expect_same(lanes, want, got_open, want_open, b, "depth_small");
+        }
+        hwy::SetSupportedTargetsForTest(0);
+        // The cases are not all trivial: many blocks write, many leave samples to the exact comparison.
+        EXPECT_GT(written_blocks, 1500) << undecided_blocks;
+        EXPECT_GT(undecided_blocks, 1500) << written_blocks;
+    }
+}
+
+}  // namespace
+}  // namespace rast::fast::detail
