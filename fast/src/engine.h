@@ -485,7 +485,14 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         if (lane == Lane::small_fixed) {
             for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
                 for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
-                    chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(record);
+                {
+                    // The bins are written at as many places as there are tiles, each cache line for the
+                    // first time: the line of the bin's next record is fetched now, for writing, rather
+                    // than when that record comes (binning spent twice its share of instructions in time).
+                    std::vector<SmallFixed>& bin = chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx];
+                    bin.push_back(record);
+                    __builtin_prefetch(bin.data() + bin.size() + 1, 1);
+                }
             continue;
         }
         const std::optional<Placed> placed = place<F>(triangle, scene.c);
