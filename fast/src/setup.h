@@ -299,21 +299,20 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
     // Differences below 2^30, products below 2^60: exact in 64 bits.
     const std::int64_t cross = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
     if (cross == 0) return Lane::culled;
-    for (int k = 0; k < 3; ++k) out.z[k] = t.v[k].z;
-    if (cross < 0) {
-        std::swap(x[1], x[2]);
-        std::swap(y[1], y[2]);
-        std::swap(out.z[1], out.z[2]);
-    }
     const auto [xmin, xmax] = min_max(x[0], x[1], x[2]);
     const auto [ymin, ymax] = min_max(y[0], y[1], y[2]);
     if (!pixel_range<F>(xmin, xmax, c.sx_min, c.sx_max, c.bits, c.vp.width, out.i_lo, out.i_hi) ||
         !pixel_range<F>(ymin, ymax, c.sy_min, c.sy_max, c.bits, c.vp.height, out.j_lo, out.j_hi))
         return Lane::culled;
     if (!is_small(out.i_lo, out.i_hi, out.j_lo, out.j_hi)) return Lane::general;
+    // Counter-clockwise: a clockwise triangle's corners 1 and 2 trade places, picked by index rather than
+    // swapped under a branch, which mispredicted every other triangle (windings are random).
+    const int second = cross < 0 ? 2 : 1;
+    const int order[3] = {0, second, 3 - second};
     for (int k = 0; k < 3; ++k) {
-        out.x[k] = static_cast<std::int32_t>(x[k]);
-        out.y[k] = static_cast<std::int32_t>(y[k]);
+        out.x[k] = static_cast<std::int32_t>(x[order[k]]);
+        out.y[k] = static_cast<std::int32_t>(y[order[k]]);
+        out.z[k] = t.v[order[k]].z;
     }
     out.id = id;
     return Lane::small_fixed;
