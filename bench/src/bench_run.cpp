@@ -164,22 +164,23 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
         contenders.push_back(
             {"reference", 1, [&scene] { return seconds_of([&] { reference::render(scene); }); }, {}, {}});
     std::vector<ErrorRow> rows;
-    // Each mode's result, rendered once untimed, then timed into it by a Renderer per thread count that
-    // keeps its working memory from round to round (warmed up by one untimed render), as llvmpipe draws
-    // into its context's with the context's memory.
+    // Each mode's result, rendered once untimed, then timed into it through a Renderer per thread count,
+    // which keeps its working memory from round to round and mode to mode, as llvmpipe draws into its
+    // context's with the context's memory. Each contender's first render is an untimed warm-up.
     std::vector<Framebuffer> results;
     results.reserve(kModes.size());
+    std::vector<fast::Renderer> renderers(thread_counts.size());
     for (const fast::Precision mode : kModes) {
         progress << ", " << fast::name(mode) << std::flush;
         Framebuffer& result = results.emplace_back(fast::render(scene, {mode, 1}));
         rows.push_back(error_row(s.info, std::string(fast::name(mode)), compare_buffers(exact, result)));
-        for (const int threads : thread_counts) {
-            const fast::Options options{mode, threads};
-            auto renderer = std::make_shared<fast::Renderer>();
-            renderer->render(scene, result, options);
-            contenders.push_back({std::string(fast::name(mode)), threads,
-                                  [&scene, &result, renderer, options] {
-                                      return seconds_of([&] { renderer->render(scene, result, options); });
+        for (std::size_t t = 0; t < thread_counts.size(); ++t) {
+            const fast::Options options{mode, thread_counts[t]};
+            fast::Renderer& renderer = renderers[t];
+            renderer.render(scene, result, options);
+            contenders.push_back({std::string(fast::name(mode)), options.threads,
+                                  [&scene, &result, &renderer, options] {
+                                      return seconds_of([&] { renderer.render(scene, result, options); });
                                   },
                                   {}, {}});
         }

@@ -189,14 +189,17 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
 // largest tile (a small viewport's is small) and reused from tile to tile, and by a Workspace from
 // render to render.
 struct TileBuffer {
-    // For a render of this sample count and viewport: storage kept when large enough.
-    void fit(int samples, Viewport vp) {
+    // For render number `render` of a Workspace, of this sample count and viewport, unless already fitted
+    // for it: storage kept when large enough.
+    void fit(std::uint64_t render, int samples, Viewport vp) {
+        if (render == fitted_for) return;
         cols = std::min(kTile, vp.width);
         rows = std::min(kTile, vp.height);
         size = static_cast<std::size_t>(samples) * rows * cols;
         z.resize(size + kRowLanes, std::numeric_limits<double>::infinity());
         ids.resize(size + kRowLanes, Framebuffer::kNoTriangle);
         planes = ExactPlanes();  // its planes are named by the ids of the last render's scene
+        fitted_for = render;
     }
     // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
     void clear() {
@@ -246,6 +249,7 @@ struct TileBuffer {
     std::size_t at(int s, int row, int col) const {
         return (static_cast<std::size_t>(s) * rows + row) * cols + col;
     }
+    std::uint64_t fitted_for = 0;  // the render fit() last fitted it for (0: none)
     int cols = 0, rows = 0;  // the row stride and rows per sample plane
     std::size_t size = 0;
     std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample (admit() allocates it)
@@ -487,11 +491,15 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
                 for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
                 {
                     // The bins are written at as many places as there are tiles, each cache line for the
-                    // first time: the line of the bin's next record is fetched now, for writing, rather
-                    // than when that record comes (binning spent twice its share of instructions in time).
+                    // first time: the line that will hold the end of the bin's next record (it starts
+                    // where this one ended) is fetched now, for writing, rather than when that record
+                    // comes (binning spent twice its share of instructions in time). An address, not a
+                    // pointer: it may lie past the bin's storage, and a prefetch never faults.
                     std::vector<SmallFixed>& bin = chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx];
                     bin.push_back(record);
-                    __builtin_prefetch(bin.data() + bin.size() + 1, 1);
+                    const std::uintptr_t next_end =
+                        reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + sizeof(SmallFixed) - 1;
+                    __builtin_prefetch(reinterpret_cast<const void*>(next_end), 1);
                 }
             continue;
         }
@@ -595,7 +603,10 @@ inline void fit(Framebuffer& fb, Viewport vp, int samples) {
 // thread and the threads' arena (Renderer, fast.h, says why).
 struct Workspace {
     std::vector<Chunk> chunks;
-    std::vector<TileBuffer> tiles;  // one per thread of the arena, by its index there
+    // One per thread of the arena, by its index there, fitted by the thread's first tile of a render (a
+    // thread that gets no tile costs nothing).
+    std::vector<TileBuffer> tiles;
+    std::uint64_t renders = 0;
     std::unique_ptr<tbb::task_arena> arena;
     int arena_threads = -1;  // Options::threads the arena was made for
 };
@@ -639,7 +650,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     std::vector<Chunk>& chunks = ws.chunks;
     chunks.resize(chunk_count);
     ws.tiles.resize(workers);
-    for (TileBuffer& tile : ws.tiles) tile.fit(scene.samples, c.vp);
+    const std::uint64_t render = ++ws.renders;
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunk_count, 1), [&](const auto& r) {
             for (std::size_t k = r.begin(); k != r.end(); ++k)
@@ -654,6 +665,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const auto& r) {
             TileBuffer& tile = ws.tiles.at(static_cast<std::size_t>(tbb::this_task_arena::current_thread_index()));
+            tile.fit(render, scene.samples, c.vp);
             for (int index = r.begin(); index != r.end(); ++index) {
                 const int i0 = index % tiles_x * kTile, j0 = index / tiles_x * kTile;
                 const TileRect rect{i0, std::min(i0 + kTile, c.vp.width) - 1, j0, std::min(j0 + kTile, c.vp.height) - 1};

@@ -21,6 +21,7 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 Renderer::~Renderer() = default;
 
 void Renderer::render(const Scene& scene, Framebuffer& target, const Options& options) {
+    if (!workspace_) workspace_ = std::make_unique<detail::Workspace>();  // moved from: starts afresh
     detail::render_scene<Fault::none>(scene, options, target, *workspace_);
 }
 

@@ -8,7 +8,9 @@
 #include <hwy/targets.h>
 
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace rast::fast::detail {
