@@ -187,8 +187,9 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
 // One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
 // kRowLanes of padding lets the last row's vector loads run past its end. Sized to the viewport's
 // largest tile (a small viewport's is small) and reused from tile to tile, and by a Workspace from
-// render to render.
-struct TileBuffer {
+// render to render. Each on cache lines of its own: the threads' buffers sit side by side in the
+// Workspace, and each thread writes its own bookkeeping for every triangle.
+struct alignas(64) TileBuffer {
     // For render number `render` of a Workspace, of this sample count and viewport, unless already fitted
     // for it: storage kept when large enough.
     void fit(std::uint64_t render, int samples, Viewport vp) {
