@@ -489,8 +489,7 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         if (lane == Lane::culled) continue;
         if (lane == Lane::small_fixed) {
             for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
-                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
-                {
+                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx) {
                     // The bins are written at as many places as there are tiles, each cache line for the
                     // first time: the line that will hold the end of the bin's next record (it starts
                     // where this one ended) is fetched now, for writing, rather than when that record
