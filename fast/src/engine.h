@@ -451,6 +451,18 @@ struct Chunk {
     std::vector<std::vector<BigEntry>> big_bins;
 };
 
+// Appends to a tile's bin. The bins are written at as many places as there are tiles, each cache line
+// for the first time: the line that will hold the end of the bin's next record (it starts where this one
+// ended) is fetched now, for writing, rather than when that record comes (binning small triangles spent
+// twice its share of instructions in time). An address, not a pointer: it may lie past the bin's
+// storage, and a prefetch never faults.
+template <class Record>
+void append(std::vector<Record>& bin, const Record& record) {
+    bin.push_back(record);
+    const std::uintptr_t next_end = reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + sizeof(Record) - 1;
+    __builtin_prefetch(reinterpret_cast<const void*>(next_end), 1);
+}
+
 template <Fault F>
 void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, int tiles_x, int tiles) {
     // Emptied, keeping the bins' storage of the last render (Workspace).
@@ -489,18 +501,8 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         if (lane == Lane::culled) continue;
         if (lane == Lane::small_fixed) {
             for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
-                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx) {
-                    // The bins are written at as many places as there are tiles, each cache line for the
-                    // first time: the line that will hold the end of the bin's next record (it starts
-                    // where this one ended) is fetched now, for writing, rather than when that record
-                    // comes (binning spent twice its share of instructions in time). An address, not a
-                    // pointer: it may lie past the bin's storage, and a prefetch never faults.
-                    std::vector<SmallFixed>& bin = chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx];
-                    bin.push_back(record);
-                    const std::uintptr_t next_end =
-                        reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + sizeof(SmallFixed) - 1;
-                    __builtin_prefetch(reinterpret_cast<const void*>(next_end), 1);
-                }
+                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
+                    append(chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx], record);
             continue;
         }
         const std::optional<Placed> placed = place<F>(triangle, scene.c);
@@ -510,8 +512,8 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         for (int ty = tile_of(placed->j_lo); ty <= tile_of(placed->j_hi); ++ty)
             for (int tx = tile_of(placed->i_lo); tx <= tile_of(placed->i_hi); ++tx) {
                 const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
-                if (small) chunk.small_bins[tile].push_back({*placed, static_cast<std::int32_t>(id)});
-                else chunk.big_bins[tile].push_back({static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)});
+                if (small) append(chunk.small_bins[tile], {*placed, static_cast<std::int32_t>(id)});
+                else append(chunk.big_bins[tile], {static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)});
             }
     }
 }
