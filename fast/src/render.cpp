@@ -15,13 +15,14 @@ void render(const Scene& scene, Framebuffer& target, const Options& options) {
     Renderer().render(scene, target, options);
 }
 
-Renderer::Renderer() : workspace_(std::make_unique<detail::Workspace>()) {}
+Renderer::Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 Renderer::~Renderer() = default;
 
 void Renderer::render(const Scene& scene, Framebuffer& target, const Options& options) {
-    if (!workspace_) workspace_ = std::make_unique<detail::Workspace>();  // moved from: starts afresh
+    // Made at the first render, and again after a move took it.
+    if (!workspace_) workspace_ = std::make_unique<detail::Workspace>();
     detail::render_scene<Fault::none>(scene, options, target, *workspace_);
 }
 
