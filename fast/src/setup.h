@@ -203,18 +203,18 @@ inline Plane make_plane_narrow(const Placed& s, const Context& c) {
     const double dx1 = v[1].x - v[0].x, dy1 = v[1].y - v[0].y, dx2 = v[2].x - v[0].x, dy2 = v[2].y - v[0].y;
     const double det = dx1 * dy2 - dx2 * dy1;
     const double dz1 = v[1].z - v[0].z, dz2 = v[2].z - v[0].z;
-    const double e1 = u * std::abs(dz1), e2 = u * std::abs(dz2);  // sub's bounds
-    // (dz1 p - dz2 q) / det.
-    const auto slope = [&](double p, double q) {
-        const double m1 = dz1 * p, m2 = dz2 * q, n = m1 - m2;
-        const double en = std::abs(p) * e1 + std::abs(q) * e2 + u * (std::abs(m1) + std::abs(m2) + std::abs(n)) +
+    const Bounded z1 = {dz1, u * std::abs(dz1)}, z2 = {dz2, u * std::abs(dz2)};  // sub's bounds
+    // (z p - w q) / det: make_plane's a = (dz1 dy2 - dz2 dy1) / det and b = (dx1 dz2 - dx2 dz1) / det, the
+    // products in either order (a product of doubles does not depend on it). Not b as -(dz1 dx2 - dz2 dx1):
+    // on a flat plane that is -0, where make_plane's is +0.
+    const auto slope = [&](Bounded z, double p, Bounded w, double q) {
+        const double m1 = z.v * p, m2 = w.v * q, n = m1 - m2;
+        const double en = std::abs(p) * z.e + std::abs(q) * w.e + u * (std::abs(m1) + std::abs(m2) + std::abs(n)) +
                           2 * DBL_TRUE_MIN;
         const double g = n / det;
         return Bounded{g, en / std::abs(det) + u * std::abs(g) + DBL_TRUE_MIN};
     };
-    // make_plane's b, dx1 dz2 - dx2 dz1, is -(dz1 dx2 - dz2 dx1); rounding to nearest is symmetric.
-    const Bounded a = slope(dy2, dy1), b_negated = slope(dx2, dx1);
-    return plane_over_box(s, c, a, {-b_negated.v, b_negated.e});
+    return plane_over_box(s, c, slope(z1, dy2, z2, dy1), slope(z2, dx1, z1, dx2));
 }
 
 // Snapping, winding, bounding box and path: nothing when the triangle covers no sample of the viewport.

@@ -1,0 +1,151 @@
+// The depth planes of setup.h. Their error bound against exact rational arithmetic (GMP): at every sample
+// of the bounding box, the double evaluation the kernels make is within a quarter of err of the exact
+// plane through the corners. And make_plane_narrow, the small lane's shortcut, against make_plane: on a
+// narrow triangle it takes the same rounded operations for the gradient, so that comes out with the same
+// bits, and it leaves out only error terms that are zero there, so its bound is no larger. Triangles from
+// the small lane's own records in every fixed mode, and placed ones of every path, with depths of every
+// magnitude and sign, flat planes and near-degenerate corners.
+#include "setup.h"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <random>
+
+namespace rast::fast::detail {
+namespace {
+
+// The three depths of a triangle, from one of the families where rounding is hardest on the bound:
+// independent magnitudes from subnormal to huge, one value (a flat plane), values a few units in the last
+// place apart (cancellation in the differences), small multiples of the least subnormal (products that
+// underflow), and a huge corner beside tiny ones.
+std::array<double, 3> random_depths(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> exponent(-1074, 1000), ulps(-4, 4), multiple(-40, 40);
+    std::array<double, 3> z;
+    switch (std::uniform_int_distribution<int>(0, 4)(rng)) {
+        case 0:
+            for (double& d : z) d = std::ldexp(unit(rng), exponent(rng));
+            break;
+        case 1:
+            z.fill(unit(rng));
+            break;
+        case 2:
+            for (double& d : z) d = 1 + ulps(rng) * 0x1p-52;
+            break;
+        case 3:
+            for (double& d : z) d = multiple(rng) * DBL_TRUE_MIN;
+            break;
+        default:
+            z = {std::ldexp(unit(rng), 900), std::ldexp(unit(rng), -900), unit(rng)};
+            break;
+    }
+    return z;
+}
+
+// Corners within `side` pixels of a random point of the viewport, the third sometimes almost on the line
+// through the first two.
+Triangle random_small_triangle(std::mt19937_64& rng, double side) {
+    std::uniform_real_distribution<double> where(0, 1000), offset(0, side);
+    const double x = where(rng), y = where(rng);
+    const std::array<double, 3> z = random_depths(rng);
+    Triangle t;
+    for (int k = 0; k < 3; ++k) t.v[k] = {x + offset(rng), y + offset(rng), z[k]};
+    if (rng() % 4 == 0) {
+        const double s = std::uniform_real_distribution<double>(0, 1)(rng);
+        t.v[2].x = t.v[0].x + s * (t.v[1].x - t.v[0].x) + 0x1p-7;
+        t.v[2].y = t.v[0].y + s * (t.v[1].y - t.v[0].y);
+    }
+    return t;
+}
+
+// The plane's double depth at (px, py), as the kernels compute it, is within err / 4 of the exact plane
+// through the corners. The bound is a worst case over every rounding, and random cases land well inside
+// it: this catches a bound several times too small (a quarter of it fails), not one term dropped beside
+// others of its size.
+void expect_bounded(const Plane& p, const Corners& v, double px, double py) {
+    const mpq_class dx1 = mpq_class(v[1].x) - v[0].x, dy1 = mpq_class(v[1].y) - v[0].y;
+    const mpq_class dx2 = mpq_class(v[2].x) - v[0].x, dy2 = mpq_class(v[2].y) - v[0].y;
+    const mpq_class dz1 = mpq_class(v[1].z) - v[0].z, dz2 = mpq_class(v[2].z) - v[0].z;
+    const mpq_class det = dx1 * dy2 - dx2 * dy1;
+    const mpq_class exact =
+        v[0].z + ((mpq_class(px) - v[0].x) * (dz1 * dy2 - dz2 * dy1) + (mpq_class(py) - v[0].y) * (dx1 * dz2 - dx2 * dz1)) / det;
+    const double z = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+    ASSERT_TRUE(std::isfinite(z));
+    const mpq_class distance = abs(mpq_class(z) - exact);
+    EXPECT_LE(distance, mpq_class(p.err) / 4) << "at (" << px << ", " << py << "): z " << z << ", err " << p.err;
+}
+
+// At the corners of the samples' box, where the bound's reach is largest, and at some samples inside.
+void expect_bounded_over_box(std::mt19937_64& rng, const Plane& p, const Placed& s, const Context& c) {
+    const double xs[] = {s.i_lo + c.ox_min, s.i_hi + c.ox_max}, ys[] = {s.j_lo + c.oy_min, s.j_hi + c.oy_max};
+    for (const double x : xs)
+        for (const double y : ys) expect_bounded(p, s.v, x, y);
+    std::uniform_int_distribution<int> column(s.i_lo, s.i_hi), row(s.j_lo, s.j_hi);
+    std::uniform_int_distribution<std::size_t> sample(0, c.offsets.size() - 1);
+    for (int k = 0; k < 4; ++k) {
+        const SamplePoint o = c.offsets[sample(rng)];
+        expect_bounded(p, s.v, column(rng) + o.x, row(rng) + o.y);
+    }
+}
+
+TEST(NarrowPlane, HasTheGeneralGradientAndABoundNoLargerThatHolds) {
+    std::mt19937_64 rng(20261124);
+    for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16}) {
+        const Context c = make_context<Fault::none>({1024, 1024}, 4, precision);
+        const std::int64_t scale = std::int64_t{1} << c.bits;
+        int compared = 0;
+        for (int n = 0; n < 4000; ++n) {
+            // Fixed16 is narrow only below a quarter of a pixel.
+            const double side = precision == Precision::fixed16 ? 0.2 : n % 2 == 0 ? 4 : 31;
+            SmallFixed record;
+            if (place_small_fixed<Fault::none>(random_small_triangle(rng, side), 0, c, record) != Lane::small_fixed ||
+                !narrow_edges(record, scale))
+                continue;
+            const Placed p = placed_of(record, c);
+            SCOPED_TRACE(::testing::Message() << "precision " << static_cast<int>(precision) << ", triangle " << n);
+            const Plane narrow = make_plane_narrow(p, c), general = make_plane(p, c);
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.x0), std::bit_cast<std::uint64_t>(general.x0));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.y0), std::bit_cast<std::uint64_t>(general.y0));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.z0), std::bit_cast<std::uint64_t>(general.z0));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.a), std::bit_cast<std::uint64_t>(general.a));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.b), std::bit_cast<std::uint64_t>(general.b));
+            EXPECT_LE(narrow.err, general.err);
+            if (narrow.err < std::numeric_limits<double>::infinity()) expect_bounded_over_box(rng, narrow, p, c);
+            if (::testing::Test::HasFailure()) return;
+            ++compared;
+        }
+        EXPECT_GT(compared, 1000);  // the generator does make narrow small triangles in this mode
+    }
+}
+
+TEST(Plane, BoundHoldsOnEveryPath) {
+    std::mt19937_64 rng(20261125);
+    for (const Precision precision : {Precision::fixed8, Precision::float32, Precision::float64}) {
+        const Context c = make_context<Fault::none>({1024, 1024}, 4, precision);
+        int checked = 0;
+        for (int n = 0; n < 3000; ++n) {
+            // Small and near-degenerate, across the screen, and reaching far past it (the wide path).
+            const double side = n % 3 == 0 ? 8 : n % 3 == 1 ? 1500 : 1e9;
+            Triangle t = random_small_triangle(rng, side);
+            const std::optional<Placed> p = place<Fault::none>(t, c);
+            if (!p) continue;
+            SCOPED_TRACE(::testing::Message() << "precision " << static_cast<int>(precision) << ", triangle " << n);
+            const Plane plane = make_plane(*p, c);
+            if (plane.err < std::numeric_limits<double>::infinity()) expect_bounded_over_box(rng, plane, *p, c);
+            if (::testing::Test::HasFailure()) return;
+            ++checked;
+        }
+        EXPECT_GT(checked, 1000);
+    }
+}
+
+}  // namespace
+}  // namespace rast::fast::detail
