@@ -197,6 +197,11 @@ ExactPlanes::~ExactPlanes() = default;
 
 int ExactPlanes::compare(std::int64_t t_id, const Corners& t, std::int64_t u_id, const Corners& u, double x,
                          double y) {
+    // A triangle with three equal depths has that depth everywhere: two such compare as those depths,
+    // without planes. A flat 2D scene ties at every overlap, and building the planes of every pair
+    // made 2 * 10^5 tiny triangles at z = 0 take 9x the time they take at random depths.
+    const auto flat = [](const Corners& c) { return c[0].z == c[1].z && c[1].z == c[2].z; };
+    if (flat(t) && flat(u)) return (t[0].z > u[0].z) - (t[0].z < u[0].z);
     if (!cache_) cache_ = std::make_unique<Cache>();
     // Ids are below 2^31 (render checks): the pair packs into one key.
     const std::uint64_t key = static_cast<std::uint64_t>(t_id) << 32 | static_cast<std::uint64_t>(u_id);
