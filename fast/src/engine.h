@@ -6,6 +6,7 @@
 #include "kernels.h"
 #include "scalar.h"
 #include "setup.h"
+#include "validate.h"
 
 #include <rast/fast.h>
 #include <rast/fast_faults.h>
@@ -25,27 +26,6 @@
 #include <string>
 
 namespace rast::fast::detail {
-
-inline void validate(Viewport vp, int samples) {
-    constexpr int kMaxSide = 1 << 24;  // pixel indices convert exactly to float in the float32 kernel
-    if (vp.width < 1 || vp.height < 1 || vp.width > kMaxSide || vp.height > kMaxSide)
-        throw std::invalid_argument("rast::fast: viewport " + std::to_string(vp.width) + "x" +
-                                    std::to_string(vp.height) + " is not 1..2^24 pixels on each side");
-    if (!is_supported_sample_count(samples))
-        throw std::invalid_argument("rast::fast: unsupported sample count " + std::to_string(samples) +
-                                    " (expected 1, 4, 8 or 16)");
-}
-
-inline bool is_finite(const Vertex& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
-
-inline bool is_finite(const Triangle& t) { return is_finite(t.v[0]) && is_finite(t.v[1]) && is_finite(t.v[2]); }
-
-inline void validate(const Triangle& t, std::size_t id) {
-    for (int k = 0; k < 3; ++k)
-        if (!is_finite(t.v[k]))
-            throw std::invalid_argument("rast::fast: triangle " + std::to_string(id) + ", vertex " +
-                                        std::to_string(k) + ": coordinate is not a finite number");
-}
 
 inline std::uint64_t span_bits(int from, int to, int i0) {
     if (from > to) return 0;
@@ -313,7 +293,7 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
                 replace = z <= tile.z[slot];
             } else {
                 // The plane, hence the exact depth, does not depend on the order of the corners.
-                const Corners u = snap(scene.triangles[other], scene.c.precision).v;
+                const Corners u = snapped(scene.triangles[other], scene.c.precision).v;
                 const int order = tile.planes.compare(p.id, v, other, u, px, py);
                 const bool wins_tie = F == Fault::no_id_tiebreak || p.id < other;
                 replace = order < 0 || (order == 0 && wins_tie);
@@ -464,12 +444,13 @@ void append(std::vector<Record>& bin, const Record& record) {
 }
 
 template <Fault F>
-void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, int tiles_x, int tiles) {
+void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
+               std::size_t tiles) {
     // Emptied, keeping the bins' storage of the last render (Workspace).
     chunk.non_finite.reset();
     chunk.big.clear();
     const auto empty_bins = [tiles](auto& bins) {
-        bins.resize(static_cast<std::size_t>(tiles));
+        bins.resize(tiles);
         for (auto& bin : bins) bin.clear();
     };
     empty_bins(chunk.fixed_bins);
@@ -479,7 +460,7 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     if (lean) {
         // Room for a uniform spread with some slack, so that most bins never reallocate and copy; pages
         // of it never written are never touched.
-        const std::size_t expected = (end - begin) / static_cast<std::size_t>(tiles);
+        const std::size_t expected = (end - begin) / tiles;
         for (std::vector<SmallFixed>& bin : chunk.fixed_bins) bin.reserve(expected + expected / 2 + 8);
     }
     // Pixel indices inside the viewport are not negative: unsigned division is a shift.
@@ -616,16 +597,20 @@ struct Workspace {
 template <Fault F>
 void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, Workspace& ws) {
     validate(scene.viewport, scene.samples);
-    if (options.threads < 0)
+    validate(options.precision);
+    // TBB's arena does not survive a count in the tens of thousands.
+    constexpr int kMaxThreads = 1024;
+    if (options.threads < 0 || options.threads > kMaxThreads)
         throw std::invalid_argument("rast::fast: thread count " + std::to_string(options.threads) +
-                                    " is negative");
+                                    " is not 0..1024");
     if (scene.triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
         throw std::invalid_argument("rast::fast: more triangles than 32-bit ids can name");
 
     const Context c = make_context<F>(scene.viewport, scene.samples, options.precision);
     const SceneView view{scene.triangles, c};
-    const int tiles_x = (c.vp.width + kTile - 1) / kTile, tiles_y = (c.vp.height + kTile - 1) / kTile;
-    const int tiles = tiles_x * tiles_y;
+    // Up to 2^18 tiles each way: their count needs 64 bits.
+    const std::size_t tiles_x = static_cast<std::size_t>(c.vp.width + kTile - 1) / kTile;
+    const std::size_t tiles = tiles_x * static_cast<std::size_t>((c.vp.height + kTile - 1) / kTile);
 
     if (!ws.arena || ws.arena_threads != options.threads) {
         const int concurrency = options.threads == 0 ? int{tbb::task_arena::automatic} : options.threads;
@@ -665,13 +650,13 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
         if (chunk.non_finite) validate(scene.triangles[*chunk.non_finite], *chunk.non_finite);
     fit(fb, c.vp, scene.samples);
     arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const auto& r) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const auto& r) {
             TileBuffer& tile = ws.tiles.at(static_cast<std::size_t>(tbb::this_task_arena::current_thread_index()));
             tile.fit(render, scene.samples, c.vp);
-            for (int index = r.begin(); index != r.end(); ++index) {
-                const int i0 = index % tiles_x * kTile, j0 = index / tiles_x * kTile;
+            for (std::size_t index = r.begin(); index != r.end(); ++index) {
+                const int i0 = static_cast<int>(index % tiles_x) * kTile, j0 = static_cast<int>(index / tiles_x) * kTile;
                 const TileRect rect{i0, std::min(i0 + kTile, c.vp.width) - 1, j0, std::min(j0 + kTile, c.vp.height) - 1};
-                render_tile<F>(chunks, static_cast<std::size_t>(index), rect, tile, view, fb);
+                render_tile<F>(chunks, index, rect, tile, view, fb);
             }
         });
     });
@@ -680,6 +665,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
 template <Fault F>
 std::vector<std::size_t> covered_by(const Triangle& triangle, Viewport vp, int samples, Precision precision) {
     validate(vp, samples);
+    validate(precision);
     validate(triangle, 0);
     const Context c = make_context<F>(vp, samples, precision);
     std::vector<std::size_t> out;

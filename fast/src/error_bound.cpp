@@ -13,6 +13,7 @@
 #include "bounded.h"
 #include "exact.h"
 #include "snap.h"
+#include "validate.h"
 
 #include <rast/fast.h>
 
@@ -81,6 +82,9 @@ Format format_of(Precision precision) {
 }  // namespace
 
 double edge_error_bound(const Triangle& t, Precision precision, Viewport vp) {
+    detail::validate(precision);
+    detail::validate(t, 0);
+    detail::validate(vp, 1);
     if (detail::is_fixed(precision)) return 0;
     const Format f = format_of(precision);
     const double width = vp.width, height = vp.height;
@@ -99,6 +103,9 @@ double edge_error_bound(const Triangle& t, Precision precision, Viewport vp) {
 }
 
 std::array<double, 3> edge_error_bound_at(const Triangle& t, Precision precision, double x, double y) {
+    detail::validate(precision);
+    detail::validate(t, 0);
+    detail::validate_sample(x, y);
     std::array<double, 3> bounds{};
     if (detail::is_fixed(precision)) return bounds;
     const Format f = format_of(precision);

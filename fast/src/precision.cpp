@@ -1,5 +1,6 @@
 // Precision names for the command line, and the snapped triangle a fixed mode rasterizes.
 #include "snap.h"
+#include "validate.h"
 
 #include <rast/fast.h>
 
@@ -29,14 +30,9 @@ std::optional<Precision> parse_precision(std::string_view s) {
 }
 
 Triangle snap(const Triangle& t, Precision precision) {
-    const int bits = detail::subpixel_bits(precision);
-    if (bits == 0) return t;
-    Triangle s = t;
-    for (Vertex& v : s.v) {
-        v.x = detail::snap_coordinate(v.x, bits);
-        v.y = detail::snap_coordinate(v.y, bits);
-    }
-    return s;
+    detail::validate(precision);
+    detail::validate(t, 0);
+    return detail::snapped(t, precision);
 }
 
 }  // namespace rast::fast

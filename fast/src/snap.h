@@ -42,4 +42,16 @@ inline std::int64_t grid_units(double x, double scale) {
     return static_cast<std::int64_t>((x * scale + 0x1.8p52) - 0x1.8p52);
 }
 
+// rast::fast::snap without its input checks: the engine snaps triangles it has already checked.
+inline Triangle snapped(const Triangle& t, Precision precision) {
+    const int bits = subpixel_bits(precision);
+    if (bits == 0) return t;
+    Triangle s = t;
+    for (Vertex& v : s.v) {
+        v.x = snap_coordinate(v.x, bits);
+        v.y = snap_coordinate(v.y, bits);
+    }
+    return s;
+}
+
 }  // namespace rast::fast::detail

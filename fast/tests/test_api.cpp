@@ -44,7 +44,46 @@ TEST(Api, RejectsBadInput) {
     EXPECT_THROW(render(scene), std::invalid_argument);
     scene.triangles[0].v[2].y = 1;
     EXPECT_THROW(render(scene, {Precision::fixed8, -1}), std::invalid_argument);
+    EXPECT_THROW(render(scene, {Precision::fixed8, 1025}), std::invalid_argument);  // TBB crashed at 70000
     EXPECT_NO_THROW(render(scene, {Precision::fixed8, 0}));
+}
+
+// The functions that take a triangle without rendering check it as render does.
+TEST(Api, EveryFunctionRejectsBadInput) {
+    const Triangle nan{{{{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}}};
+    const Triangle good{{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}};
+    const auto bogus = static_cast<Precision>(7);
+    EXPECT_EQ(name(bogus), "unknown");
+    EXPECT_THROW(snap(nan, Precision::fixed8), std::invalid_argument);
+    EXPECT_THROW(snap(good, bogus), std::invalid_argument);
+    EXPECT_THROW(edge_error_bound(nan, Precision::float32, {4, 4}), std::invalid_argument);
+    EXPECT_THROW(edge_error_bound(good, Precision::float32, {0, -5}), std::invalid_argument);
+    EXPECT_THROW(edge_error_bound_at(good, Precision::float32, std::nan(""), 0), std::invalid_argument);
+    EXPECT_THROW(edge_error_bound_at(nan, Precision::float32, 0, 0), std::invalid_argument);
+    EXPECT_THROW(covered_samples(good, {4, 4}, 1, bogus), std::invalid_argument);
+    Scene scene;
+    scene.viewport = {4, 4};
+    scene.triangles.push_back(good);
+    EXPECT_THROW(render(scene, {bogus, 1}), std::invalid_argument);
+}
+
+// Sides within 2^24 whose framebuffer would not be: refused before anything is sized for them (a count of
+// 2^35 tiles once overflowed an int, and binning wrote out of bounds).
+TEST(Api, RejectsAFramebufferOfMoreThan2To32Samples) {
+    Scene scene;
+    scene.triangles.push_back({{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}}});
+    for (const auto& [viewport, samples] : {std::pair{Viewport{1 << 24, 1 << 23}, 1}, std::pair{Viewport{1 << 16, 1 << 16}, 4},
+                                            std::pair{Viewport{1 << 24, 257}, 1}}) {
+        scene.viewport = viewport;
+        scene.samples = samples;
+        try {
+            render(scene);
+            FAIL() << viewport.width << "x" << viewport.height << " was accepted";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("more than 2^32"), std::string::npos) << e.what();
+        }
+        EXPECT_THROW(covered_samples(scene.triangles[0], viewport, samples, Precision::fixed8), std::invalid_argument);
+    }
 }
 
 // A non-finite depth is rejected whichever way binning takes the triangle: small and covering samples,

@@ -6,6 +6,8 @@
 //   fixed4 / fixed8 / fixed16: vertices snapped to a 1/2^N pixel grid (round to nearest, ties to even),
 //     then exact integer edge functions: bit-identical to the reference on already snapped vertices.
 //   float32 / float64: edge functions in floating point, within edge_error_bound() of the exact edge.
+//     Where that bound is +infinity (an evaluation can overflow: coordinates near +-DBL_MAX), the
+//     coverage is whatever the IEEE evaluation gives: such a triangle can lose samples, or all of them.
 //
 // Fixed-point range. A triangle whose snapped coordinates and the viewport's extent are all within
 // 2^(29-N) pixels of the origin (fixed8: 2^21) takes the fast path: 64-bit integer edge functions,
@@ -22,15 +24,20 @@
 // rational arithmetic. The depth written is that double plane value, which differs from the reference's
 // exact depth rounded to nearest by at most a few ulps of the depths and plane slopes involved (a
 // running error bound kept per triangle; it grows without limit only for near-degenerate triangles).
-// Where double arithmetic overflows, the depth written is the exact depth rounded.
+// Where double arithmetic overflows, the depth written is the exact depth rounded. Overlapping
+// triangles at equal depths (a flat 2D scene with one z) tie at every shared sample, and every tie is
+// settled in exact arithmetic: 2 * 10^5 tiny overlapping triangles all at z = 0 took 13x as long as the
+// same with random depths.
 //
 // Determinism. The framebuffer is identical for every thread count and every SIMD target (Highway
 // dynamic dispatch: SSE4, AVX2, AVX-512 where present): coverage is exact or evaluated in the same IEEE
 // operations everywhere, and each tile composes its triangles in id order.
 //
-// Input. Every call throws std::invalid_argument for a viewport that is not 1..2^24 pixels on each
-// side, a sample count other than 1, 4, 8, 16, a non-finite coordinate (naming the triangle and the
-// vertex), or a negative thread count.
+// Input. Every function throws std::invalid_argument, before computing or allocating anything, for a
+// viewport that is not 1..2^24 pixels on each side or whose samples number more than 2^32 (a
+// framebuffer of 48 GiB), a sample count other than 1, 4, 8, 16, a non-finite coordinate (naming the
+// triangle and the vertex) or sample position, a Precision outside the enum, or a thread count outside
+// 0..1024. name() alone answers "unknown" for such a Precision.
 #pragma once
 
 #include <rast/scene.h>
@@ -48,10 +55,11 @@ enum class Precision { fixed4, fixed8, fixed16, float32, float64 };
 
 struct Options {
     Precision precision = Precision::fixed8;
-    int threads = 1;  // 0: all hardware threads. The result is identical for every count.
+    int threads = 1;  // 0..1024; 0: all hardware threads. The result is identical for every count.
 };
 
-// "fixed4", "fixed8", "fixed16", "float32", "float64"; parse_precision is its inverse.
+// "fixed4", "fixed8", "fixed16", "float32", "float64" ("unknown" for a value outside the enum);
+// parse_precision is its inverse.
 std::string_view name(Precision p);
 std::optional<Precision> parse_precision(std::string_view s);
 
