@@ -1,6 +1,7 @@
 // rast bench: every engine and precision mode on the same scenes in one run — speed (median and spread),
 // error against the exact reference, hard cases, and the antialiasing error of the sample patterns.
 #include "commands.h"
+#include "output_paths.h"
 
 #include <rast/atomic_file.h>
 #include <rast/bench_run.h>
@@ -10,7 +11,9 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rast::cli {
@@ -20,7 +23,7 @@ struct BenchOptions {
     bool quick = false;
     std::vector<std::string> only;
     std::string mesh = RAST_DEFAULT_MESH;
-    std::string json_out, plot_out, markdown_out;
+    std::optional<std::string> json_out, plot_out, markdown_out;
     std::vector<std::string> notes;
 };
 
@@ -30,9 +33,9 @@ std::string command_line(const BenchOptions& o) {
     if (o.quick) command += " --quick";
     for (const std::string& section : o.only) command += " --only " + section;
     if (o.mesh != RAST_DEFAULT_MESH) command += " --mesh " + o.mesh;
-    if (!o.json_out.empty()) command += " --json " + o.json_out;
-    if (!o.plot_out.empty()) command += " --plot " + o.plot_out;
-    if (!o.markdown_out.empty()) command += " --markdown " + o.markdown_out;
+    if (o.json_out) command += " --json " + *o.json_out;
+    if (o.plot_out) command += " --plot " + *o.plot_out;
+    if (o.markdown_out) command += " --markdown " + *o.markdown_out;
     for (const std::string& note : o.notes) command += " --note '" + note + "'";
     return command;
 }
@@ -40,15 +43,16 @@ std::string command_line(const BenchOptions& o) {
 std::string markdown(const bench::Report& report, const BenchOptions& o) {
     std::string out = "# rast bench: speed against error\n\n"
                       "Every figure below comes from one run of the command shown under the machine.\n\n";
-    if (!o.plot_out.empty()) {
-        const auto plot = std::filesystem::relative(std::filesystem::absolute(o.plot_out),
-                                                    std::filesystem::absolute(o.markdown_out).parent_path());
+    if (o.plot_out) {
+        const auto plot = std::filesystem::relative(std::filesystem::absolute(*o.plot_out),
+                                                    std::filesystem::absolute(*o.markdown_out).parent_path());
         out += "![speed against error: one point per engine and scene](" + plot.generic_string() + ")\n\n";
     }
     return out + bench::format_table(report);
 }
 
 void run(const BenchOptions& o) {
+    check_output_paths({o.mesh}, {{"--json", o.json_out}, {"--plot", o.plot_out}, {"--markdown", o.markdown_out}});
     bench::Config config;
     config.quick = o.quick;
     if (!o.only.empty()) {
@@ -65,9 +69,12 @@ void run(const BenchOptions& o) {
     bench::Report report = bench::run_bench(config, std::cerr);
     report.notes.insert(report.notes.end(), o.notes.begin(), o.notes.end());
     std::cout << bench::format_table(report);
-    if (!o.json_out.empty()) write_file_atomic(o.json_out, bench::format_json(report));
-    if (!o.plot_out.empty()) write_file_atomic(o.plot_out, bench::format_svg(report));
-    if (!o.markdown_out.empty()) write_file_atomic(o.markdown_out, markdown(report, o));
+    // Every file's bytes first, so that nothing is written unless all of them could be made.
+    std::vector<std::pair<std::string, std::string>> files;
+    if (o.json_out) files.emplace_back(*o.json_out, bench::format_json(report));
+    if (o.plot_out) files.emplace_back(*o.plot_out, bench::format_svg(report));
+    if (o.markdown_out) files.emplace_back(*o.markdown_out, markdown(report, o));
+    for (const auto& [path, bytes] : files) write_file_atomic(path, bytes);
 }
 
 }  // namespace

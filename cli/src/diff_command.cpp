@@ -2,8 +2,11 @@
 // A difference is information about a precision mode, not an error: the exit status is 0.
 #include "commands.h"
 #include "engine_choice.h"
+#include "output_paths.h"
 #include "png_image.h"
 #include "scene_input.h"
+
+#include <rast/atomic_file.h>
 
 #include <CLI/CLI.hpp>
 
@@ -11,6 +14,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace rast::cli {
 namespace {
@@ -18,7 +22,7 @@ namespace {
 struct DiffOptions {
     SceneInput input;
     EngineChoice engine{.engine = "fast"};
-    std::string image_out;
+    std::optional<std::string> image_out;
 };
 
 // Small viewports are magnified (nearest neighbour) until the longer side is at least this many
@@ -44,6 +48,7 @@ Image disagreement(const Framebuffer& a, const Framebuffer& b, const Image& refe
 
 
 void run_diff(const DiffOptions& o) {
+    check_output_paths({o.input.path}, {{"-o", o.image_out}});
     const Scene scene = o.input.load();
     const Framebuffer exact = render(scene, EngineChoice{.engine = "reference"});
     const Framebuffer fast = render(scene, o.engine);
@@ -62,11 +67,12 @@ void run_diff(const DiffOptions& o) {
               << "compare: reference (exact) vs " << o.engine.describe() << '\n'
               << "differing samples: " << samples << " of " << exact.ids.size() << '\n'
               << "differing pixels: " << pixels << " of " << std::size_t(vp.width) * vp.height << '\n';
-    if (o.image_out.empty()) return;
+    if (!o.image_out) return;
     const Image reference = resolve_ids(exact);
     const int scale = std::max(1, (kMinimumSide + std::max(vp.width, vp.height) - 1) / std::max(vp.width, vp.height));
-    write_png(o.image_out, side_by_side({reference, resolve_ids(fast), disagreement(exact, fast, reference)}, scale));
-    std::cout << "wrote " << o.image_out << " (reference | " << o.engine.describe()
+    const Image panels = side_by_side({reference, resolve_ids(fast), disagreement(exact, fast, reference)}, scale);
+    write_file_atomic(*o.image_out, encode_png(panels));
+    std::cout << "wrote " << *o.image_out << " (reference | " << o.engine.describe()
               << " | disagreeing pixels in magenta), magnified " << scale << "x\n";
 }
 

@@ -19,6 +19,13 @@ void add_engine_options(CLI::App& command, EngineChoice& choice) {
     command.add_option("--engine", choice.engine, "Rasterizer: the exact reference or the fast path")
         ->check(CLI::IsMember({"reference", "fast"}))
         ->capture_default_str();
+    // The reference would ignore the fast path's settings. Parsing has read every argument before any option
+    // is checked, so --engine's value is there to look at; a command without --engine has a fixed engine.
+    const auto for_fast_only = [&command, &choice](const std::string&) -> std::string {
+        const CLI::Option* engine = command.get_option_no_throw("--engine");
+        const std::string chosen = engine && engine->count() > 0 ? engine->results().back() : choice.engine;
+        return chosen == "fast" ? std::string{} : "applies to --engine fast only";
+    };
     command
         .add_option("--precision", choice.precision,
                     "Fast path precision: fixed4|fixed8|fixed16 (vertices snapped to 1/2^N pixel, exact integer "
@@ -28,9 +35,11 @@ void add_engine_options(CLI::App& command, EngineChoice& choice) {
                                             : "unknown precision '" + s +
                                                   "' (expected fixed4, fixed8, fixed16, float32 or float64)";
         })
+        ->check(for_fast_only)
         ->capture_default_str();
     command.add_option("--threads", choice.threads, "Fast path threads (0: all cores); the result is the same")
         ->check(CLI::Range(0, 1024))
+        ->check(for_fast_only)
         ->capture_default_str();
 }
 

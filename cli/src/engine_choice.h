@@ -22,7 +22,8 @@ struct EngineChoice {
     std::string describe() const;
 };
 
-// Registers --engine, --precision and --threads on a subcommand.
+// Registers --engine, --precision and --threads on a subcommand; --precision and --threads are refused
+// unless the engine is the fast path (`choice.engine` as given, for a command that then removes --engine).
 void add_engine_options(CLI::App& command, EngineChoice& choice);
 
 // Renders with the chosen engine; `stats` receives the reference's exact-arithmetic counts.

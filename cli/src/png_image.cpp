@@ -1,7 +1,5 @@
 #include "png_image.h"
 
-#include <rast/atomic_file.h>
-
 #include <png.h>
 
 #include <algorithm>
@@ -71,22 +69,22 @@ Image side_by_side(const std::vector<Image>& panels, int scale) {
     return out;
 }
 
-void write_png(const std::filesystem::path& path, const Image& image) {
+std::string encode_png(const Image& image) {
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
     png.width = static_cast<png_uint_32>(image.width);
     png.height = static_cast<png_uint_32>(image.height);
     png.format = PNG_FORMAT_RGB;
     const png_int_32 stride = image.width * 3;
-    // First call sizes the buffer, second fills it: the file is then written in one atomic step.
+    // The first call sizes the buffer, the second fills it.
     png_alloc_size_t size = 0;
     if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), stride, nullptr))
-        throw std::runtime_error(path.string() + ": cannot encode PNG: " + png.message);
+        throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
     std::string bytes(size, '\0');
     if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgb.data(), stride, nullptr))
-        throw std::runtime_error(path.string() + ": cannot encode PNG: " + png.message);
+        throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
     bytes.resize(size);
-    write_file_atomic(path, bytes);
+    return bytes;
 }
 
 }  // namespace rast::cli

@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -32,7 +31,7 @@ Image resolve_ids(const Framebuffer& fb);
 // sharp), with a grey separator `scale` pixels wide between them. One panel: just the magnification.
 Image side_by_side(const std::vector<Image>& panels, int scale);
 
-// Encodes as PNG and writes the file atomically.
-void write_png(const std::filesystem::path& path, const Image& image);
+// The image encoded as PNG: the bytes of the file.
+std::string encode_png(const Image& image);
 
 }  // namespace rast::cli

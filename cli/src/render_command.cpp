@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "default_scene.h"
 #include "engine_choice.h"
+#include "output_paths.h"
 #include "png_image.h"
 #include "scene_input.h"
 
@@ -14,11 +15,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rast::cli {
 namespace {
@@ -27,10 +31,10 @@ struct RenderOptions {
     SceneInput input;
     bool use_default = false;
     EngineChoice engine;
-    std::string image_out;
+    std::optional<std::string> image_out;
     int magnify = 1;
     std::string coverage = "samples";
-    std::string ids_out, depth_out, coverage_out;
+    std::optional<std::string> ids_out, depth_out, coverage_out;
 };
 
 std::string percent(std::uint64_t part, std::uint64_t whole) {
@@ -66,6 +70,10 @@ std::string format_area(Viewport vp, const std::vector<reference::Rational>& are
 }
 
 void run_render(const RenderOptions& o) {
+    std::vector<std::filesystem::path> inputs;
+    if (!o.use_default) inputs.push_back(o.input.path);
+    check_output_paths(inputs, {{"-o", o.image_out}, {"--ids-out", o.ids_out}, {"--depth-out", o.depth_out},
+                                {"--coverage-out", o.coverage_out}});
     const Scene scene = o.use_default ? o.input.with_samples(default_scene()) : o.input.load();
     const std::string name = o.use_default ? "default scene" : o.input.path;
 
@@ -92,22 +100,27 @@ void run_render(const RenderOptions& o) {
         line(stats.depth_nearest_exact, stats.samples_covered, "depths rounded to nearest");
     }
 
-    const bool want_area = o.coverage == "area" || !o.coverage_out.empty();
+    const bool want_area = o.coverage == "area" || o.coverage_out;
     const auto area = want_area ? reference::coverage_area(scene) : std::vector<reference::Rational>{};
-    if (!o.image_out.empty()) {
+    // Every file's bytes first, so that nothing is written unless all of them could be made.
+    std::vector<std::pair<std::string, std::string>> files;
+    if (o.image_out) {
         const Image picture = o.coverage == "area" ? area_image(scene.viewport, area) : resolve_ids(fb);
-        write_png(o.image_out, o.magnify == 1 ? picture : side_by_side({picture}, o.magnify));
-        std::cout << "wrote " << o.image_out << '\n';
+        files.emplace_back(*o.image_out, encode_png(o.magnify == 1 ? picture : side_by_side({picture}, o.magnify)));
     }
-    if (!o.ids_out.empty() || !o.depth_out.empty()) {
+    if (o.ids_out || o.depth_out) {
         // The id and depth files describe pixel centres: with several samples, render the centres once more.
         Scene centres = scene;
         centres.samples = 1;
         const Framebuffer at_centres = scene.samples == 1 ? fb : render(centres, o.engine);
-        if (!o.ids_out.empty()) write_file_atomic(o.ids_out, format_ids(at_centres));
-        if (!o.depth_out.empty()) write_file_atomic(o.depth_out, format_depth(at_centres));
+        if (o.ids_out) files.emplace_back(*o.ids_out, format_ids(at_centres));
+        if (o.depth_out) files.emplace_back(*o.depth_out, format_depth(at_centres));
     }
-    if (!o.coverage_out.empty()) write_file_atomic(o.coverage_out, format_area(scene.viewport, area));
+    if (o.coverage_out) files.emplace_back(*o.coverage_out, format_area(scene.viewport, area));
+    for (const auto& [path, bytes] : files) {
+        write_file_atomic(path, bytes);
+        std::cout << "wrote " << path << '\n';
+    }
 }
 
 }  // namespace
@@ -119,15 +132,21 @@ void add_render_command(CLI::App& app) {
     auto* scene = add_scene_options(*cmd, o->input);
     auto* def = cmd->add_flag("--default", o->use_default, "Render the built-in default scene instead");
     scene->excludes(def);
+    // The built-in scene is in screen space already: a camera would be ignored.
+    for (CLI::Option* view : mesh_view_options(*cmd)) def->excludes(view);
     add_engine_options(*cmd, o->engine);
-    cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour");
+    auto* image =
+        cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour");
+    // Both shape the picture only: without one they would be ignored.
     cmd->add_option("--magnify", o->magnify, "Magnify the picture N times, nearest neighbour, so pixels stay sharp")
         ->check(CLI::Range(1, 64))
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(image);
     cmd->add_option("--coverage", o->coverage,
                     "What the picture shows: 'samples' (ids, samples averaged) or 'area' (exact area coverage)")
         ->check(CLI::IsMember({"samples", "area"}))
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(image);
     cmd->add_option("--ids-out", o->ids_out,
                     "Write the id buffer: H lines of W ids of the triangle owning each pixel centre, or -1");
     cmd->add_option("--depth-out", o->depth_out,

@@ -12,10 +12,18 @@
 namespace rast::cli {
 namespace {
 
+const std::string kMeshViewGroup = "Meshes (OBJ, OFF, PLY, STL)";
+
+bool is_mesh_path(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl";
+}
+
 // "x,y,z" into three finite doubles, for CLI11.
-void add_vector_option(CLI::App& command, const std::string& name, std::optional<Vec3>& target,
-                       const std::string& help) {
-    command
+CLI::Option* add_vector_option(CLI::App& command, const std::string& name, std::optional<Vec3>& target,
+                               const std::string& help) {
+    return command
         .add_option_function<std::vector<double>>(
             name, [&target](const std::vector<double>& v) { target = Vec3{v[0], v[1], v[2]}; }, help)
         ->delimiter(',')
@@ -25,28 +33,30 @@ void add_vector_option(CLI::App& command, const std::string& name, std::optional
 }
 
 void add_mesh_view_options(CLI::App& command, MeshView& view) {
-    const std::string group = "Meshes (OBJ, OFF, PLY, STL)";
-    command.add_option("--width", view.width, "Viewport width in pixels, for a mesh")
-        ->check(CLI::Range(1, 32768))
-        ->capture_default_str()
-        ->group(group);
-    command.add_option("--height", view.height, "Viewport height in pixels, for a mesh")
-        ->check(CLI::Range(1, 32768))
-        ->capture_default_str()
-        ->group(group);
-    add_vector_option(command, "--eye", view.eye, "Camera position (default: framed to fit the mesh)");
-    add_vector_option(command, "--target", view.target, "Point the camera looks at (default: the mesh's centre)");
-    add_vector_option(command, "--up", view.up, "Camera up direction (default: 0,1,0)");
-    command.add_option("--fov", view.fov_y_degrees, "Vertical field of view in degrees (default: 45)")
-        ->check(CLI::Range(1e-3, 179.0))
-        ->group(group);
-    command.add_option("--near", view.near_plane, "Near plane distance (default: framed)")
-        ->check(CLI::PositiveNumber)
-        ->group(group);
-    command.add_option("--far", view.far_plane, "Far plane distance (default: framed)")
-        ->check(CLI::PositiveNumber)
-        ->group(group);
-    for (auto* name : {"--eye", "--target", "--up"}) command.get_option(name)->group(group);
+    const std::vector<CLI::Option*> options{
+        command.add_option("--width", view.width, "Viewport width in pixels, for a mesh")
+            ->check(CLI::Range(1, 32768))
+            ->capture_default_str(),
+        command.add_option("--height", view.height, "Viewport height in pixels, for a mesh")
+            ->check(CLI::Range(1, 32768))
+            ->capture_default_str(),
+        add_vector_option(command, "--eye", view.eye, "Camera position (default: framed to fit the mesh)"),
+        add_vector_option(command, "--target", view.target, "Point the camera looks at (default: the mesh's centre)"),
+        add_vector_option(command, "--up", view.up, "Camera up direction (default: 0,1,0)"),
+        command.add_option("--fov", view.fov_y_degrees, "Vertical field of view in degrees (default: 45)")
+            ->check(CLI::Range(1e-3, 179.0)),
+        command.add_option("--near", view.near_plane, "Near plane distance (default: framed)")
+            ->check(CLI::PositiveNumber),
+        command.add_option("--far", view.far_plane, "Far plane distance (default: framed)")
+            ->check(CLI::PositiveNumber)};
+    // A .tri scene is in screen space already: it would ignore them. Parsing has read every argument before
+    // any option is checked, so SCENE's value is there to look at.
+    const auto for_meshes_only = [&command](const std::string&) -> std::string {
+        const CLI::Option* scene = command.get_option("SCENE");
+        if (scene->count() == 0 || is_mesh_path(scene->results().back())) return {};
+        return "applies to meshes only (OBJ, OFF, PLY, STL), and " + scene->results().back() + " is a .tri scene";
+    };
+    for (CLI::Option* option : options) option->group(kMeshViewGroup)->check(for_meshes_only);
 }
 
 }  // namespace
@@ -60,11 +70,11 @@ CLI::Option* add_scene_options(CLI::App& command, SceneInput& input) {
     return scene;
 }
 
-bool SceneInput::is_mesh() const {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl";
+std::vector<CLI::Option*> mesh_view_options(CLI::App& command) {
+    return command.get_options([](const CLI::Option* option) { return option->get_group() == kMeshViewGroup; });
 }
+
+bool SceneInput::is_mesh() const { return is_mesh_path(path); }
 
 Scene SceneInput::with_samples(Scene scene) const {
     if (samples) scene.samples = *samples;

@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rast::cli {
 
@@ -34,6 +35,10 @@ struct SceneInput {
 };
 
 // Registers SCENE, --samples, --width/--height and the camera options on a subcommand; returns SCENE.
+// --width/--height and the camera options are refused with a .tri SCENE, which would ignore them.
 CLI::Option* add_scene_options(CLI::App& command, SceneInput& input);
+
+// The options --width/--height and the camera options that add_scene_options registered on `command`.
+std::vector<CLI::Option*> mesh_view_options(CLI::App& command);
 
 }  // namespace rast::cli

@@ -1,11 +1,16 @@
 // The command line, end to end: files in, exit status, messages and files out.
 #include "cli_harness.h"
 
+#include <sys/stat.h>
+
+#include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 namespace {
 
+using rast::cli::testing::contains;
 using rast::cli::testing::Result;
 using rast::cli::testing::rast;
 
@@ -105,9 +110,156 @@ TEST_F(Cli, BadArgumentsAreRejected) {
 }
 
 TEST_F(Cli, OutputIntoAMissingDirectoryFailsCleanly) {
-    const Result r = rast("render " + file("corner.tri", kCorner) + " --ids-out " + (dir / "no/such/ids.txt").string());
+    const Result r = rast("render " + file("corner.tri", kCorner) + " --ids-out " + out("no/such/ids.txt"));
     EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.out.find("rast: error:"), std::string::npos) << r.out;
+    EXPECT_TRUE(contains(r.out, "rast: error: --ids-out '" + out("no/such/ids.txt") + "': its folder '" +
+                                    out("no/such") + "' does not exist\n"))
+        << r.out;
+}
+
+// Each output option, given the scene's own path (spelt as given, spelt otherwise, or a hard link to it),
+// is refused before anything is written: the scene stays byte for byte what it was.
+TEST_F(Cli, AnOutputThatIsTheInputIsRefused) {
+    const std::string scene = file("corner.tri", kCorner);
+    std::filesystem::create_hard_link(scene, dir / "link.tri");
+    for (const char* option : {"-o", "--ids-out", "--depth-out", "--coverage-out"})
+        for (const std::string& same : {scene, (dir / "." / "corner.tri").string(), out("link.tri")}) {
+            const Result r = rast("render " + scene + " " + option + " " + same);
+            EXPECT_EQ(r.status, 1) << option << " " << same;
+            EXPECT_TRUE(contains(r.out, std::string(option) + " '" + same + "' is the same file as the input '" +
+                                            scene + "': refusing to overwrite it"))
+                << r.out;
+            EXPECT_FALSE(contains(r.out, "scene:")) << "it rendered first:\n" << r.out;
+            EXPECT_EQ(read("corner.tri"), kCorner) << option << " " << same;
+        }
+}
+
+TEST_F(Cli, TwoOutputsOnOneFileAreRefused) {
+    const std::string scene = file("corner.tri", kCorner);
+    std::filesystem::create_directories(dir / "sub");
+    const Result r = rast("render " + scene + " -o " + out("out.txt") + " --ids-out " + out("sub/../out.txt"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "--ids-out '" + out("sub/../out.txt") + "' is the same file as -o '" + out("out.txt") +
+                                    "': give each output its own path"))
+        << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.txt"));
+}
+
+// Every output path is checked before the work, so a bad one leaves the others as they were.
+TEST_F(Cli, ABadOutputPathLeavesTheOtherOutputsUntouched) {
+    const std::string scene = file("corner.tri", kCorner);
+    file("old.png", "old picture");
+    file("a-file", "not a folder");
+    std::filesystem::create_directories(dir / "folder");
+    const std::pair<std::string, std::string> bad[] = {
+        {out("missing/ids.txt"), "its folder '" + out("missing") + "' does not exist"},
+        {out("a-file/ids.txt"), "its parent '" + out("a-file") + "' is not a folder"},
+        {out("folder"), "is a folder"},
+        {out("folder") + "/", "the path names a folder, not a file"}};
+    for (const auto& [path, why] : bad) {
+        const Result r = rast("render " + scene + " -o " + out("old.png") + " --depth-out " + out("new.txt") +
+                              " --ids-out " + path);
+        EXPECT_EQ(r.status, 1) << path;
+        EXPECT_TRUE(contains(r.out, "rast: error: --ids-out '" + path + "': " + why + "\n")) << r.out;
+        EXPECT_EQ(read("old.png"), "old picture") << path;
+        EXPECT_FALSE(std::filesystem::exists(dir / "new.txt")) << path;
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir / "folder"));
+}
+
+// Writing is a rename over the path: it would replace a pipe or a device, not write into it.
+TEST_F(Cli, AnOutputThatIsNotARegularFileIsRefused) {
+    ASSERT_EQ(::mkfifo(out("pipe").c_str(), 0600), 0);
+    const Result r = rast("render " + file("corner.tri", kCorner) + " --ids-out " + out("pipe"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "--ids-out '" + out("pipe") + "': exists and is not a regular file")) << r.out;
+    EXPECT_TRUE(std::filesystem::is_fifo(dir / "pipe"));
+}
+
+TEST_F(Cli, AnEmptyOutputPathIsRefused) {
+    const std::string scene = file("corner.tri", kCorner);
+    for (const char* option : {"-o", "--ids-out", "--depth-out", "--coverage-out"}) {
+        const Result r = rast("render " + scene + " " + option + " ''");
+        EXPECT_EQ(r.status, 1) << option;
+        EXPECT_TRUE(contains(r.out, "rast: error: " + std::string(option) + " '': the path is empty\n")) << r.out;
+    }
+}
+
+TEST_F(Cli, EveryFileWrittenIsReported) {
+    const Result r = rast("render " + file("corner.tri", kCorner) + " -o " + out("a.png") + " --ids-out " +
+                          out("ids.txt") + " --coverage-out " + out("area.txt"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "wrote " + out("a.png") + "\nwrote " + out("ids.txt") + "\nwrote " + out("area.txt") +
+                                    "\n"))
+        << r.out;
+    EXPECT_EQ(read("ids.txt"), kCornerIds);
+}
+
+// A .tri scene (or the built-in one) is in screen space already: the mesh options would be ignored.
+TEST_F(Cli, MeshOptionsWithoutAMeshAreRefused) {
+    const std::string scene = file("corner.tri", kCorner);
+    const std::pair<std::string, std::string> options[] = {
+        {"--width", "8"},     {"--height", "8"}, {"--eye", "1,2,3"}, {"--target", "0,0,0"},
+        {"--up", "0,0,1"},    {"--fov", "30"},   {"--near", "0.5"},  {"--far", "9"}};
+    for (const auto& [option, value] : options) {
+        Result r = rast("render " + scene + " " + option + " " + value + " --ids-out " + out("ids.txt"));
+        EXPECT_NE(r.status, 0) << option;
+        EXPECT_TRUE(contains(r.out, option + ": applies to meshes only (OBJ, OFF, PLY, STL), and " + scene +
+                                        " is a .tri scene"))
+            << r.out;
+        r = rast("render --default " + option + " " + value + " --ids-out " + out("ids.txt"));
+        EXPECT_NE(r.status, 0) << option;
+        EXPECT_TRUE(contains(r.out, option + " excludes --default")) << r.out;
+        EXPECT_FALSE(std::filesystem::exists(dir / "ids.txt")) << option;
+    }
+}
+
+TEST_F(Cli, MeshOptionsPlaceAMesh) {
+    // One triangle facing the camera: what matters here is the viewport the options make.
+    const Result r = rast("render " + file("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n") +
+                          " --width 5 --height 2 --eye 0,0,4 --fov 40 --ids-out " + out("ids.txt"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, " 1 triangles, 5x2, ")) << r.out;
+}
+
+// The reference is exact; it would ignore the fast path's precision and threads.
+TEST_F(Cli, FastPathOptionsWithoutTheFastPathAreRefused) {
+    const std::string scene = file("corner.tri", kCorner);
+    for (const char* engine : {"", " --engine reference"})
+        for (const std::string option : {"--precision", "--threads"}) {
+            const std::string value = option == "--threads" ? " 2" : " fixed4";
+            const Result r = rast("render " + scene + engine + " " + option + value);
+            EXPECT_NE(r.status, 0) << engine << " " << option;
+            EXPECT_TRUE(contains(r.out, option + ": applies to --engine fast only")) << r.out;
+            EXPECT_FALSE(contains(r.out, "scene:")) << r.out;
+        }
+}
+
+// --magnify and --coverage shape the picture: without -o they would be ignored.
+TEST_F(Cli, PictureOptionsWithoutAPictureAreRefused) {
+    const std::string scene = file("corner.tri", kCorner);
+    for (const std::string option : {"--magnify", "--coverage"}) {
+        const Result r = rast("render " + scene + " " + option + (option == "--magnify" ? " 2" : " area") +
+                              " --ids-out " + out("ids.txt"));
+        EXPECT_NE(r.status, 0) << option;
+        EXPECT_TRUE(contains(r.out, option + " requires --output")) << r.out;
+        EXPECT_FALSE(std::filesystem::exists(dir / "ids.txt")) << option;
+    }
+}
+
+// rast bench checks its outputs before it runs (which takes a minute even with --quick).
+TEST_F(Cli, BenchRefusesBadOutputsBeforeRunning) {
+    if (rast("bench --help").status != 0) GTEST_SKIP() << "built without rast bench";
+    Result r = rast("bench --quick --json " + out("a.json") + " --plot " + out("missing/plot.svg"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "rast: error: --plot '" + out("missing/plot.svg") + "': its folder '" + out("missing") +
+                                    "' does not exist\n"))
+        << r.out;
+    r = rast("bench --quick --json " + out("a.json") + " --markdown " + out("a.json"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "--markdown '" + out("a.json") + "' is the same file as --json '" + out("a.json")))
+        << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.json"));
 }
 
 TEST_F(Cli, HelpExplainsEveryOption) {

@@ -14,7 +14,12 @@ namespace rast {
 namespace {
 
 [[noreturn]] void fail(int error, const std::string& what) {
-    throw std::system_error(error, std::generic_category(), "write_file_atomic: " + what);
+    throw std::system_error(error, std::generic_category(), what);
+}
+
+// The error of a step that left `target` as it was.
+[[noreturn]] void cannot_write(int error, const std::filesystem::path& target, const std::string& step) {
+    fail(error, "cannot write '" + target.string() + "': " + step);
 }
 
 // Closes the descriptor and removes the temporary unless the rename has taken it over.
@@ -66,16 +71,15 @@ Temporary create_temporary(const std::filesystem::path& target) {
         const std::string path = (dir / name).string();
         const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) return Temporary(path, fd);
-        if (errno != EEXIST) fail(errno, "cannot create a temporary file in '" + dir.string() + "' for '" +
-                                             target.string() + "'");
+        if (errno != EEXIST) cannot_write(errno, target, "cannot create a temporary file in '" + dir.string() + "'");
     }
-    fail(EEXIST, "no free temporary file name in '" + dir.string() + "'");
+    cannot_write(EEXIST, target, "no free temporary file name in '" + dir.string() + "'");
 }
 
 }  // namespace
 
 void write_file_atomic(const std::filesystem::path& target, std::string_view bytes) {
-    if (target.filename().empty()) fail(EISDIR, "'" + target.string() + "' does not name a file");
+    if (target.filename().empty()) cannot_write(EISDIR, target, "the path does not name a file");
     Temporary temp = create_temporary(target);
     const char* data = bytes.data();
     std::size_t left = bytes.size();
@@ -83,15 +87,15 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view byt
         const ssize_t written = ::write(temp.fd(), data, left);
         if (written < 0) {
             if (errno == EINTR) continue;
-            fail(errno, "cannot write '" + temp.path() + "'");
+            cannot_write(errno, target, "cannot write the temporary file '" + temp.path() + "'");
         }
         data += written;
         left -= static_cast<std::size_t>(written);
     }
-    if (::fsync(temp.fd()) != 0) fail(errno, "cannot fsync '" + temp.path() + "'");
-    if (temp.close() != 0) fail(errno, "cannot close '" + temp.path() + "'");
+    if (::fsync(temp.fd()) != 0) cannot_write(errno, target, "cannot fsync the temporary file '" + temp.path() + "'");
+    if (temp.close() != 0) cannot_write(errno, target, "cannot close the temporary file '" + temp.path() + "'");
     if (::rename(temp.path().c_str(), target.c_str()) != 0)
-        fail(errno, "cannot rename '" + temp.path() + "' to '" + target.string() + "'");
+        cannot_write(errno, target, "cannot rename the temporary file '" + temp.path() + "' over it");
     temp.committed();
 
     // The rename is durable only once the directory entry is.

@@ -64,9 +64,16 @@ TEST_F(AtomicFile, NewFileHasOrdinaryPermissions) {
     EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask);
 }
 
-TEST_F(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {
+TEST_F(AtomicFile, MissingDirectoryThrowsNamingPathAndStepAndCreatesNothing) {
     const fs::path target = dir_ / "absent" / "out.txt";
-    EXPECT_THROW(write_file_atomic(target, "x"), std::system_error);
+    try {
+        write_file_atomic(target, "x");
+        FAIL() << "no error";
+    } catch (const std::system_error& e) {
+        EXPECT_EQ(e.code(), std::errc::no_such_file_or_directory);
+        EXPECT_EQ(std::string(e.what()), "cannot write '" + target.string() + "': cannot create a temporary file in '" +
+                                             (dir_ / "absent").string() + "': No such file or directory");
+    }
     EXPECT_FALSE(fs::exists(dir_ / "absent"));
     EXPECT_EQ(entries(), 0u);
 }
@@ -79,7 +86,8 @@ TEST_F(AtomicFile, TargetThatIsADirectoryIsUntouchedAndTemporaryRemoved) {
         write_file_atomic(target, "x");
         FAIL() << "no error";
     } catch (const std::system_error& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot rename"), std::string::npos) << e.what();
+        const std::string prefix = "cannot write '" + target.string() + "': cannot rename the temporary file '";
+        EXPECT_EQ(std::string(e.what()).substr(0, prefix.size()), prefix);
     }
     EXPECT_TRUE(fs::is_directory(target));
     EXPECT_EQ(slurp(target / "keep"), "kept");

@@ -1,0 +1,63 @@
+#include "output_paths.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <stdexcept>
+#include <system_error>
+
+namespace rast::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Two existing paths are the same file when they reach the same inode (through hard or symbolic links); a
+// path not yet there is the same as another when both resolve to one name.
+bool same_file(const fs::path& a, const fs::path& b) {
+    if (fs::exists(a) && fs::exists(b)) return fs::equivalent(a, b);
+    return fs::weakly_canonical(a) == fs::weakly_canonical(b);
+}
+
+// Why `path` cannot be written, or nothing if it can.
+std::optional<std::string> unwritable(const fs::path& path) {
+    if (path.empty()) return "the path is empty";
+    if (!path.has_filename()) return "the path names a folder, not a file";
+    const fs::file_status status = fs::status(path);
+    if (fs::is_directory(status)) return "is a folder";
+    // The file is replaced by renaming a new one over it: that would replace a device or a pipe, not write to it.
+    if (fs::exists(status) && !fs::is_regular_file(status)) return "exists and is not a regular file";
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    if (!fs::exists(folder)) return "its folder '" + folder.string() + "' does not exist";
+    if (!fs::is_directory(folder)) return "its parent '" + folder.string() + "' is not a folder";
+    // The new file is made in the folder and renamed into place, which needs write and search permission.
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        return "cannot write in its folder '" + folder.string() + "': " +
+               std::error_code(errno, std::generic_category()).message();
+    return std::nullopt;
+}
+
+}  // namespace
+
+void check_output_paths(const std::vector<fs::path>& inputs, const std::vector<OutputPath>& outputs) {
+    std::vector<const OutputPath*> earlier;
+    for (const OutputPath& output : outputs) {
+        if (!output.path) continue;
+        const std::string named = output.option + " '" + *output.path + "'";
+        try {
+            if (const auto why = unwritable(*output.path)) throw std::runtime_error(named + ": " + *why);
+            for (const fs::path& input : inputs)
+                if (same_file(*output.path, input))
+                    throw std::runtime_error(named + " is the same file as the input '" + input.string() +
+                                             "': refusing to overwrite it");
+            for (const OutputPath* other : earlier)
+                if (same_file(*output.path, *other->path))
+                    throw std::runtime_error(named + " is the same file as " + other->option + " '" + *other->path +
+                                             "': give each output its own path");
+        } catch (const fs::filesystem_error& e) {
+            throw std::runtime_error(named + ": cannot check the path: " + e.code().message());
+        }
+        earlier.push_back(&output);
+    }
+}
+
+}  // namespace rast::cli
