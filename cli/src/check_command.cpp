@@ -14,13 +14,18 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
-#include <set>
+#include <span>
+#include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace rast::cli {
 namespace {
@@ -35,8 +40,7 @@ struct CheckOptions {
 };
 
 struct Violation {
-    std::size_t sample;                    // Framebuffer::index
-    std::vector<std::size_t> triangles;    // those covering it, ascending
+    std::size_t sample;  // Framebuffer::index
     std::string what;
 };
 
@@ -59,62 +63,109 @@ std::vector<std::size_t> covered(const Triangle& t, const Scene& scene, const En
     return fast::covered_samples(t, scene.viewport, scene.samples, engine.fast_options().precision);
 }
 
-// For every sample, the triangles that cover it, in id order.
-std::vector<std::vector<std::size_t>> coverers(const Scene& scene, const EngineChoice& engine) {
-    std::vector<std::vector<std::size_t>> by_sample(static_cast<std::size_t>(scene.viewport.width) *
-                                                    scene.viewport.height * scene.samples);
-    for (std::size_t k = 0; k < scene.triangles.size(); ++k)
-        for (std::size_t index : covered(scene.triangles[k], scene, engine)) by_sample[index].push_back(k);
-    return by_sample;
-}
-
-using Point = std::pair<double, double>;
-
-std::set<std::pair<Point, Point>> edges_of(const Triangle& t) {
-    std::set<std::pair<Point, Point>> edges;
-    for (int e = 0; e < 3; ++e) {
-        Point a{t.v[e].x, t.v[e].y}, b{t.v[(e + 1) % 3].x, t.v[(e + 1) % 3].y};
-        edges.insert(std::minmax(a, b));
+// For every sample, the triangles that cover it, ascending, as compressed rows: one offset per sample and
+// one flat array of triangle ids, 4 bytes each. A vector per sample took 24 bytes a sample, twice render's
+// buffers; this takes 4, beside 4 per covering and, while it is built, one triangle's list of samples.
+class Coverage {
+public:
+    // Each triangle is rasterized twice, to count and then to fill, so no per-triangle lists are held.
+    Coverage(const Scene& scene, const EngineChoice& engine)
+        : offsets_(static_cast<std::size_t>(scene.viewport.width) * scene.viewport.height * scene.samples + 1) {
+        const auto& triangles = scene.triangles;
+        for (const Triangle& t : triangles)
+            for (std::size_t index : covered(t, scene, engine)) ++offsets_[index + 1];
+        // offsets_[index + 1] becomes where the sample's ids start, and the fill below moves it to where
+        // they end, which is where the next sample's start.
+        std::uint64_t total = 0;
+        for (std::size_t k = 1; k < offsets_.size(); ++k)
+            total += std::exchange(offsets_[k], static_cast<std::uint32_t>(total));
+        if (total > std::numeric_limits<std::uint32_t>::max() ||
+            triangles.size() > std::numeric_limits<std::uint32_t>::max())
+            throw std::length_error("rast check: " + std::to_string(total) + " coverings of " +
+                                    std::to_string(triangles.size()) + " triangles exceed 32-bit indices");
+        ids_.resize(total);
+        for (std::size_t k = 0; k < triangles.size(); ++k)
+            for (std::size_t index : covered(triangles[k], scene, engine))
+                ids_[offsets_[index + 1]++] = static_cast<std::uint32_t>(k);
     }
-    return edges;
+
+    std::size_t samples() const { return offsets_.size() - 1; }
+    std::span<const std::uint32_t> at(std::size_t sample) const {
+        return {ids_.data() + offsets_[sample], ids_.data() + offsets_[sample + 1]};
+    }
+
+private:
+    std::vector<std::uint32_t> offsets_, ids_;
+};
+
+// Each triangle's three edges as numbers, equal exactly where the endpoints are (as doubles, either
+// direction): the edges sorted once, so that equal ones are adjacent.
+std::vector<std::array<std::uint32_t, 3>> edge_numbers(const std::vector<Triangle>& triangles) {
+    using Point = std::pair<double, double>;
+    std::vector<std::pair<std::pair<Point, Point>, std::uint32_t>> edges;  // (edge, 3 * triangle + e)
+    edges.reserve(3 * triangles.size());
+    for (std::size_t k = 0; k < triangles.size(); ++k)
+        for (int e = 0; e < 3; ++e) {
+            const Vertex &a = triangles[k].v[e], &b = triangles[k].v[(e + 1) % 3];
+            edges.push_back({std::minmax(Point{a.x, a.y}, Point{b.x, b.y}), static_cast<std::uint32_t>(3 * k + e)});
+        }
+    std::ranges::sort(edges);
+    std::vector<std::array<std::uint32_t, 3>> numbers(triangles.size());
+    std::uint32_t number = 0;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        if (k > 0 && edges[k].first != edges[k - 1].first) ++number;
+        numbers[edges[k].second / 3][edges[k].second % 3] = number;
+    }
+    return numbers;
 }
 
-bool share_an_edge(const Triangle& a, const Triangle& b) {
-    const auto ea = edges_of(a), eb = edges_of(b);
-    return std::any_of(ea.begin(), ea.end(), [&](const auto& e) { return eb.count(e) > 0; });
-}
-
-// A .tri scene: samples covered by two triangles that share an edge (bit-identical endpoints).
-std::vector<Violation> overlaps_along_shared_edges(const Scene& scene, const EngineChoice& engine) {
+// A .tri scene: samples covered by two triangles that share an edge, each named by its first such pair
+// (lowest ids first). At each sample the covering triangles' edges are sorted, so that a shared one
+// shows as a run: the cost grows as the coverings times their logarithm, however deep the overlap and
+// however many triangles share one edge.
+std::vector<Violation> overlaps_along_shared_edges(const Scene& scene, const Coverage& coverage) {
     std::vector<Violation> found;
-    const auto by_sample = coverers(scene, engine);
-    for (std::size_t index = 0; index < by_sample.size(); ++index) {
-        const auto& ids = by_sample[index];
-        for (std::size_t a = 0; a < ids.size(); ++a)
-            for (std::size_t b = a + 1; b < ids.size(); ++b)
-                if (share_an_edge(scene.triangles[ids[a]], scene.triangles[ids[b]])) {
-                    found.push_back({index, ids,
-                                     "covered " + std::to_string(ids.size()) + " times, by triangles " +
-                                         std::to_string(ids[a]) + " and " + std::to_string(ids[b]) +
-                                         ", which share an edge"});
-                    a = b = ids.size();
+    const auto numbers = edge_numbers(scene.triangles);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;  // (edge number, triangle) at one sample
+    for (std::size_t index = 0; index < coverage.samples(); ++index) {
+        const auto ids = coverage.at(index);
+        edges.clear();
+        for (std::uint32_t t : ids)
+            for (std::uint32_t number : numbers[t]) edges.push_back({number, t});
+        std::ranges::sort(edges);
+        // Within a run of one edge the triangles ascend: its least pair is its first two distinct ones.
+        std::optional<std::pair<std::uint32_t, std::uint32_t>> least;
+        for (std::size_t start = 0, end = 0; start < edges.size(); start = end) {
+            while (end < edges.size() && edges[end].first == edges[start].first) ++end;
+            for (std::size_t k = start + 1; k < end; ++k)
+                if (edges[k].second != edges[start].second) {
+                    least = std::min(least.value_or(std::pair{edges[start].second, edges[k].second}),
+                                     std::pair{edges[start].second, edges[k].second});
+                    break;
                 }
+        }
+        if (least)
+            found.push_back({index, "covered " + std::to_string(ids.size()) + " times, by triangles " +
+                                        std::to_string(least->first) + " and " + std::to_string(least->second) +
+                                        ", which share an edge"});
     }
     return found;
 }
 
 // A closed mesh: facing is the sign of each projected triangle's screen-space area (projection keeps the
 // faces' winding); every sample must be covered as often by front- as by back-facing triangles.
-std::vector<Violation> unbalanced_facing(const Scene& scene, const EngineChoice& engine) {
+std::vector<Violation> unbalanced_facing(const Scene& scene, const Coverage& coverage) {
+    std::vector<bool> front_facing(scene.triangles.size());
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k)
+        front_facing[k] = properties::orientation(scene.triangles[k]) > 0;
     std::vector<Violation> found;
-    const auto by_sample = coverers(scene, engine);
-    for (std::size_t index = 0; index < by_sample.size(); ++index) {
-        int front = 0, back = 0;
-        for (std::size_t k : by_sample[index]) (properties::orientation(scene.triangles[k]) > 0 ? front : back) += 1;
+    for (std::size_t index = 0; index < coverage.samples(); ++index) {
+        const auto ids = coverage.at(index);
+        const auto front = std::ranges::count_if(ids, [&](std::uint32_t k) { return front_facing[k]; });
+        const auto back = static_cast<std::ptrdiff_t>(ids.size()) - front;
         if (front != back)
-            found.push_back({index, by_sample[index],
-                             "covered " + std::to_string(front + back) + " times: " + std::to_string(front) +
-                                 " front-facing, " + std::to_string(back) + " back-facing"});
+            found.push_back({index, "covered " + std::to_string(ids.size()) + " times: " + std::to_string(front) +
+                                        " front-facing, " + std::to_string(back) + " back-facing"});
     }
     return found;
 }
@@ -137,9 +188,10 @@ std::string command_line(const CheckOptions& o) {
 // The violation as a corpus case: the triangles that cover the first violating sample. For a scene
 // they are a folded or cracked tiling, which watertight rejects; for a mesh, front and back faces
 // overlap by nature, so the case names the per-triangle properties that catch a wrong coverage.
-fs::path keep_case(const CheckOptions& o, const Scene& scene, const Violation& first, bool mesh) {
+fs::path keep_case(const CheckOptions& o, const Scene& scene, const Coverage& coverage, const Violation& first,
+                   bool mesh) {
     Scene kept{scene.viewport, scene.samples, {}};
-    for (std::size_t k : first.triangles) kept.triangles.push_back(scene.triangles[k]);
+    for (std::uint32_t k : coverage.at(first.sample)) kept.triangles.push_back(scene.triangles[k]);
     const std::string engine = o.engine.is_reference() ? "reference" : o.engine.precision;
     const std::string where = describe_sample(scene.viewport, scene.samples, first.sample);
     const TriHeader header{
@@ -161,7 +213,6 @@ bool run_check(const CheckOptions& o) {
               << scene.viewport.width << "x" << scene.viewport.height << ", " << scene.samples
               << " sample(s) per pixel\nengine: " << o.engine.describe() << '\n';
 
-    std::vector<Violation> violations;
     if (mesh) {
         if (!read_mesh(o.input.path).closed) {
             std::cout << "rule:   none: the mesh has boundary edges, so coverage need not balance\n";
@@ -172,18 +223,20 @@ bool run_check(const CheckOptions& o) {
             return true;
         }
         std::cout << "rule:   closed mesh: every sample covered as often by front- as by back-facing triangles\n";
-        violations = unbalanced_facing(scene, o.engine);
     } else {
         std::cout << "rule:   no sample covered by two triangles that share an edge\n";
-        violations = overlaps_along_shared_edges(scene, o.engine);
     }
+    const Coverage coverage(scene, o.engine);
+    const std::vector<Violation> violations =
+        mesh ? unbalanced_facing(scene, coverage) : overlaps_along_shared_edges(scene, coverage);
     for (std::size_t k = 0; k < violations.size() && k < o.show; ++k)
         std::cout << "  " << describe_sample(scene.viewport, scene.samples, violations[k].sample) << ": "
                   << violations[k].what << '\n';
     if (violations.size() > o.show) std::cout << "  ... and " << violations.size() - o.show << " more\n";
     std::cout << violations.size() << " violating samples\n";
     if (violations.empty()) return true;
-    std::cout << "wrote " << keep_case(o, scene, violations.front(), mesh).string() << '\n';
+    const fs::path kept = keep_case(o, scene, coverage, violations.front(), mesh);
+    std::cout << "wrote " << kept.string() << '\n';
     return false;
 }
 
@@ -199,9 +252,21 @@ void add_check_command(CLI::App& app, int& status) {
         "corpus case, and make the exit status 1.");
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
+    // Coverage is counted triangle by triangle, on one thread: the option would be ignored.
+    cmd->remove_option(cmd->get_option("--threads"));
+    // Checked before the work: the folder is made only when a violation is found.
     cmd->add_option("--corpus-out", o->corpus_out, "Folder for the corpus case a violation is written to")
+        ->check([](const std::string& folder) -> std::string {
+            if (folder.empty()) return "the path is empty";
+            if (fs::exists(folder) && !fs::is_directory(folder)) return "'" + folder + "' exists and is not a folder";
+            return {};
+        })
         ->capture_default_str();
-    cmd->add_option("--show", o->show, "How many violating samples to print")->capture_default_str();
+    cmd->add_option("--show", o->show, "How many violating samples to print")
+        ->check([](const std::string& count) -> std::string {
+            return count.find('-') == std::string::npos ? "" : "a count cannot be negative, got " + count;
+        })
+        ->capture_default_str();
     cmd->callback([o, &status] {
         if (!run_check(*o)) status = 1;
     });

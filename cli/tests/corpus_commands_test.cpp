@@ -2,6 +2,7 @@
 #include "cli_harness.h"
 
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -87,6 +88,49 @@ TEST_F(CorpusCommands, CheckReportsSamplesCoveredTwiceAcrossASharedEdgeAndKeepsT
         << replayed.out;
 }
 
+// Every sample of a 4x4 viewport under a big triangle 0 that shares no edge. On it, three folds: A = 1 and B = 2
+// (kFold), B and C = 3 along x = 4 (C tiles A across x + y = 4, owning the samples on it), and A and D = 4 along
+// x = 0 (D owns only its left edge: (0.5, 1.5) and (0.5, 2.5)). E = 5 folds over triangle 0 along its bottom
+// edge and reaches only (1.5, 0.5) and (2.5, 0.5), where pair (0, 5) comes before (1, 2). (1.5, 2.5) is
+// covered by 0 and C only, which share no edge.
+TEST_F(CorpusCommands, CheckNamesTheFirstPairSharingAnEdgeAtEachSampleAndNothingElse) {
+    const std::string scene = file("folds.tri",
+                                   "viewport 4 4\n"
+                                   "tri -10 -10 0  30 -10 0  -10 30 0\n"
+                                   "tri 0 0 0  4 0 0  0 4 0\n"
+                                   "tri 0 0 0  4 0 0  4 4 0\n"
+                                   "tri 4 0 0  0 4 0  4 4 0\n"
+                                   "tri 0 4 0  0 0 0  2 2 0\n"
+                                   "tri -10 -10 0  30 -10 0  2 1 0\n");
+    const Result r = rast("check " + scene + " --corpus-out " + (dir / "found").string());
+    EXPECT_EQ(r.status, 1) << r.out;
+    const std::string fold = "by triangles 1 and 2, which share an edge\n";
+    const std::string bc = "covered 3 times, by triangles 2 and 3, which share an edge\n";
+    const std::string ad = "covered 3 times, by triangles 1 and 4, which share an edge\n";
+    const std::string e = "covered 4 times, by triangles 0 and 5, which share an edge\n";
+    EXPECT_TRUE(contains(r.out, "rule:   no sample covered by two triangles that share an edge\n"
+                                "  pixel (0, 0) sample 0 at (0.5, 0.5): covered 3 times, " + fold +
+                                "  pixel (1, 0) sample 0 at (1.5, 0.5): " + e +
+                                "  pixel (2, 0) sample 0 at (2.5, 0.5): " + e +
+                                "  pixel (3, 0) sample 0 at (3.5, 0.5): " + bc +
+                                "  pixel (0, 1) sample 0 at (0.5, 1.5): " + ad +
+                                "  pixel (1, 1) sample 0 at (1.5, 1.5): covered 3 times, " + fold +
+                                "  pixel (2, 1) sample 0 at (2.5, 1.5): " + bc +
+                                "  pixel (3, 1) sample 0 at (3.5, 1.5): " + bc +
+                                "  pixel (0, 2) sample 0 at (0.5, 2.5): " + ad +
+                                "  pixel (2, 2) sample 0 at (2.5, 2.5): " + bc +
+                                "  pixel (3, 2) sample 0 at (3.5, 2.5): " + bc +
+                                "  pixel (3, 3) sample 0 at (3.5, 3.5): " + bc +
+                                "12 violating samples\n"))
+        << r.out;
+    // The kept case: the three triangles over the first violating sample, 0, A and B.
+    const std::string kept = slurp(dir / "found" / "check-folds-reference.tri");
+    EXPECT_EQ(kept.substr(kept.find("\ntri ")),
+              "\ntri  -0x1.4p+3 -0x1.4p+3 0x0p+0  0x1.ep+4 -0x1.4p+3 0x0p+0  -0x1.4p+3 0x1.ep+4 0x0p+0\n"
+              "tri  0x0p+0 0x0p+0 0x0p+0  0x1p+2 0x0p+0 0x0p+0  0x0p+0 0x1p+2 0x0p+0\n"
+              "tri  0x0p+0 0x0p+0 0x0p+0  0x1p+2 0x0p+0 0x0p+0  0x1p+2 0x1p+2 0x0p+0\n");
+}
+
 TEST_F(CorpusCommands, DiffCountsWhereFloat32LosesANeedleFarFromTheOrigin) {
     // A needle from x = 0.25, where it spans 3.5 - 2^-22 .. 3.5 + 2^-23, to an apex (2^40, 3.5): the reference
     // covers the eight centres of row 3, strictly inside. float32 rounds 3.5 + 2^-23 to 3.5, and its edge
@@ -98,6 +142,57 @@ TEST_F(CorpusCommands, DiffCountsWhereFloat32LosesANeedleFarFromTheOrigin) {
     EXPECT_TRUE(contains(r.out, "differing samples: 8 of 64\n")) << r.out;
     EXPECT_TRUE(contains(r.out, "differing pixels: 8 of 64\n")) << r.out;
     EXPECT_EQ(slurp(dir / "diff.png").substr(1, 3), "PNG");
+}
+
+TEST_F(CorpusCommands, DiffRefusesToOverwriteItsSceneOrAnEmptyPath) {
+    const std::string scene = file("square.tri", kGoodCase);
+    Result r = rast("diff " + scene + " -o " + scene);
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "rast: error: -o '" + scene + "' is the same file as the input '" + scene +
+                                    "': refusing to overwrite it\n"))
+        << r.out;
+    EXPECT_EQ(slurp(scene), kGoodCase);
+    r = rast("diff " + scene + " -o ''");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "rast: error: -o '': the path is empty\n")) << r.out;
+    EXPECT_FALSE(contains(r.out, "differing")) << "it compared first:\n" << r.out;
+}
+
+// diff and check take the same scene and engine options as render, and refuse the same ignored ones.
+TEST_F(CorpusCommands, DiffAndCheckRefuseOptionsTheirSceneOrEngineWouldIgnore) {
+    const std::string scene = file("fold.tri", kFold);
+    const std::string found = " --corpus-out " + (dir / "found").string();
+    for (const std::string& command : {"diff " + scene, "check " + scene + found}) {
+        const Result r = rast(command + " --width 8");
+        EXPECT_NE(r.status, 0) << command;
+        EXPECT_TRUE(contains(r.out, "--width: applies to meshes only (OBJ, OFF, PLY, STL), and " + scene +
+                                        " is a .tri scene"))
+            << r.out;
+    }
+    const Result r = rast("check " + scene + " --precision fixed4" + found);
+    EXPECT_NE(r.status, 0);
+    EXPECT_TRUE(contains(r.out, "--precision: applies to --engine fast only")) << r.out;
+    EXPECT_FALSE(fs::exists(dir / "found"));
+}
+
+// Refused before the work, so that a fold is never reported and then lost: a corpus folder that cannot be
+// one, a negative count of samples to show, and --threads, which check's coverage count would ignore.
+TEST_F(CorpusCommands, CheckRefusesABadCorpusFolderANegativeCountAndThreads) {
+    const std::string scene = file("fold.tri", kFold);
+    const std::string not_a_folder = file("note.txt", "kept\n");
+    for (const auto& [args, message] :
+         {std::pair{" --corpus-out " + not_a_folder, "--corpus-out: '" + not_a_folder + "' exists and is not a folder"},
+          std::pair{std::string(" --corpus-out ''"), std::string("--corpus-out: the path is empty")},
+          std::pair{" --show -1 --corpus-out " + (dir / "found").string(), std::string("--show: a count cannot be negative, got -1")},
+          std::pair{" --engine fast --threads 2 --corpus-out " + (dir / "found").string(),
+                    std::string("The following arguments were not expected")}}) {
+        const Result r = rast("check " + scene + args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_TRUE(contains(r.out, message)) << r.out;
+        EXPECT_FALSE(contains(r.out, "violating")) << "it checked first:\n" << r.out;
+    }
+    EXPECT_EQ(slurp(not_a_folder), "kept\n");
+    EXPECT_FALSE(fs::exists(dir / "found"));
 }
 
 TEST_F(CorpusCommands, DiffFindsNothingOnASnappedSceneWithFixed8) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <vector>
@@ -20,7 +21,8 @@ MeshFileCheck check_obj(TokenLines& in) {
     while (in.next()) {
         if (in[0] == "v") {
             if (in.size() < 4) in.fail("'v' expects at least 3 numbers (x y z), got " + values(in.size() - 1));
-            for (std::size_t k = 1; k < in.size(); ++k) in.number(k);
+            for (std::size_t k = 1; k < 4; ++k) float_coordinate(in, k);
+            for (std::size_t k = 4; k < in.size(); ++k) in.number(k);
             ++vertices;
         } else if (in[0] == "f") {
             if (in.size() < 4) in.fail("'f' expects at least 3 vertices, got " + values(in.size() - 1));
@@ -69,7 +71,8 @@ MeshFileCheck check_off(TokenLines& in) {
     for (long long v = 0; v < vertex_count; ++v) {
         in.expect("vertex " + std::to_string(v) + " of " + std::to_string(vertex_count));
         if (in.size() < 3) in.fail("a vertex needs at least 3 numbers (x y z), got " + values(in.size()));
-        for (std::size_t k = 0; k < in.size(); ++k) in.number(k);
+        for (std::size_t k = 0; k < 3; ++k) float_coordinate(in, k);
+        for (std::size_t k = 3; k < in.size(); ++k) in.number(k);
         text += joined(in);
     }
     for (long long f = 0; f < face_count; ++f) {
@@ -102,7 +105,7 @@ void check_ascii_stl(TokenLines& in) {
         } else if (keyword == "vertex") {
             if (in.size() != 4) in.fail("'vertex' expects 3 numbers (x y z), got " + values(in.size() - 1));
             if (loop_vertices < 0) in.fail("'vertex' outside 'outer loop'");
-            for (std::size_t k = 1; k < 4; ++k) in.number(k);
+            for (std::size_t k = 1; k < 4; ++k) float_coordinate(in, k);
             ++loop_vertices;
         } else if (keyword == "endloop") {
             if (loop_vertices != 3)
@@ -140,6 +143,14 @@ void check_binary_stl(std::istream& in, std::uint32_t count, const std::string& 
 }
 
 }  // namespace
+
+double float_coordinate(const TokenLines& in, std::size_t k) {
+    const double value = in.number(k);
+    // Beyond FLT_MAX by half a float ulp or more, the value rounds to infinity.
+    if (std::isinf(static_cast<float>(value)))
+        in.fail("number " + quote_token(in[k]) + " exceeds float range: meshes are read as float");
+    return value;
+}
 
 MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension) {
     const std::string file = path.string();

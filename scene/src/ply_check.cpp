@@ -41,8 +41,8 @@ const PlyType* find_type(std::string_view name) {
 // The list count types OpenMesh's reader accepts.
 constexpr std::array<std::string_view, 4> kCountTypes{"uchar", "uint8", "uint16", "int"};
 
-// The vertex properties OpenMesh reads from binary data as floating point only: an integer there would
-// be read as nothing and shift every value after it.
+// The vertex properties OpenMesh reads as float: from binary data, an integer there would be read as nothing
+// and shift every value after it; from text, so would a number beyond float's range.
 constexpr std::array<std::string_view, 10> kFloatVertexProperties{"x", "y", "z", "nx", "ny", "nz", "u", "v", "s", "t"};
 
 struct PlyProperty {
@@ -57,6 +57,12 @@ struct PlyElement {
     std::int64_t line;
     std::vector<PlyProperty> properties;
 };
+
+bool read_as_float(const PlyElement& e, std::string_view property) {
+    return e.name == "vertex" &&
+           std::find(kFloatVertexProperties.begin(), kFloatVertexProperties.end(), property) !=
+               kFloatVertexProperties.end();
+}
 
 enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
 
@@ -163,9 +169,7 @@ void add_property(const HeaderLines& h, PlyHeader& header) {
         p = {h[2], &type_named(h, h[1]), nullptr};
         // OpenMesh takes either word for the type, so a name that is a type name can swap them.
         if (find_type(p.name)) h.fail("property name " + quote_token(p.name) + " is a type name");
-        const bool float_only = std::find(kFloatVertexProperties.begin(), kFloatVertexProperties.end(), p.name) !=
-                                kFloatVertexProperties.end();
-        if (header.format != PlyFormat::ascii && e.name == "vertex" && float_only && p.type->integer)
+        if (header.format != PlyFormat::ascii && read_as_float(e, p.name) && p.type->integer)
             h.fail("vertex property '" + p.name + "' of type " + quote_token(h[1]) +
                    ": OpenMesh reads it from binary data only as float or double");
     } else {
@@ -276,7 +280,10 @@ MeshFileCheck check_ascii_data(TokenLines& in, const PlyHeader& header) {
             for (const PlyProperty& p : e.properties) {
                 if (at >= in.size()) in.fail("too few values for element '" + e.name + "': " + values(in.size()));
                 if (!p.count_type) {
-                    in.number(at++);
+                    if (read_as_float(e, p.name))
+                        float_coordinate(in, at++);
+                    else
+                        in.number(at++);
                     continue;
                 }
                 const long long n = in.integer(at++);

@@ -194,6 +194,40 @@ TEST_F(MeshFiles, RejectsMalformedPlyWithLine) {
               "a.ply:5: unknown PLY header keyword 'what'");
 }
 
+// OpenMesh reads coordinates as float and drops a vertex whose coordinate overflows, so every later index
+// shifts and it blamed a face: "Face contains invalid vertex index" (OBJ), "Face has equal vertices" (OFF).
+// A vertex that no face uses counts too, as it shifts the others all the same.
+TEST_F(MeshFiles, RejectsCoordinatesBeyondFloatRangeWithLine) {
+    const std::string reason = " exceeds float range: meshes are read as float";
+    EXPECT_EQ(error_of("a.obj", "v 1e39 0 0\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 2 3 4\n"), "a.obj:1: number '1e39'" + reason);
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 1 0 0\nv 0 -3.4028236e38 0\nf 1 2 3\n"),
+              "a.obj:3: number '-3.4028236e38'" + reason);
+    EXPECT_EQ(error_of("a.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n# unused\n0 0 1e39\n3 0 1 2\n"),
+              "a.off:7: number '1e39'" + reason);
+    EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0 3.5e38 0\n"),
+              "a.stl:5: number '3.5e38'" + reason);
+    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty float y\n"
+                            "property float z\nproperty float nx\nelement face 1\n"
+                            "property list uchar int vertex_indices\nend_header\n";
+    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 0\n1e39 0 0 0\n"), "a.ply:12: number '1e39'" + reason);
+    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 -1e39\n"), "a.ply:11: number '-1e39'" + reason);
+}
+
+// 3.4028235e38 is below FLT_MAX + half an ulp, so it rounds to FLT_MAX and reads. Values OpenMesh does not keep
+// as float may be larger: an OBJ vertex's w, a PLY vertex property of its own.
+TEST_F(MeshFiles, ReadsCoordinatesUpToFloatMaxAndLargerValuesThatAreNotCoordinates) {
+    const float max = std::numeric_limits<float>::max();
+    Mesh m = read_mesh(write("t.obj", "v 0 0 0\nv 3.4028235e38 0 0\nv 0 -3.4028235e38 0 1e300\nf 1 2 3\n"));
+    EXPECT_EQ(m.positions.at(1), (Vec3{max, 0, 0}));
+    EXPECT_EQ(m.positions.at(2), (Vec3{0, -max, 0}));
+    m = read_mesh(write("t.ply",
+                        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                        "property float z\nproperty double quality\nelement face 1\n"
+                        "property list uchar int vertex_indices\nend_header\n"
+                        "0 0 0 1e300\n1 0 0 0\n0 1 0 -1e300\n3 0 1 2\n"));
+    EXPECT_EQ(m.positions.at(2), (Vec3{0, 1, 0}));
+}
+
 TEST_F(MeshFiles, RejectsMalformedAsciiStlWithLine) {
     EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"),
               "a.stl:6: a facet has 2 vertices; STL facets are triangles");
