@@ -173,8 +173,11 @@ void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
 template <bool kPerSample>
 struct DepthLanes {
     explicit DepthLanes(const DepthPlane& p)
-        : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), e(hn::Set(D(), p.err)),
-          stored_e(hn::Set(D(), p.stored_err)), id(hn::Set(DI(), p.id)) {}
+        : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), b(hn::Set(D(), p.b)),
+          y0(hn::Set(D(), p.y0)), e(hn::Set(D(), p.err)), stored_e(hn::Set(D(), p.stored_err)),
+          id(hn::Set(DI(), p.id)) {}
+    // b (py - y0), the scalar definition's, lane by lane: a row's term of the plane.
+    HWY_INLINE VD b_dy(VD py) const { return hn::Mul(b, hn::Sub(py, y0)); }
     // The row at offset `row` of the rows: z, its bounds (read only when kPerSample) and ids.
     struct Row {
         double *z, *err;
@@ -200,7 +203,7 @@ struct DepthLanes {
         hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, row.ids + k)), di, row.ids + k);
         return hn::AndNot(hn::Or(write, farther), mask);
     }
-    VD z0, a, x0, e, stored_e;
+    VD z0, a, x0, b, y0, e, stored_e;
     hn::Vec<DI> id;
 };
 
@@ -213,13 +216,13 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     const DepthLanes<kPerSample> lanes_test(p);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
     const auto px_end = hn::Set(d, double(b.i0 + b.width) + b.sx);  // as in CoverageLoop
-    // py = j + sy, exact as px is; b (py - y0) is the scalar definition's, lane by lane.
-    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0), down = hn::Set(d, 1.0);
+    // py = j + sy, exact as px is.
+    const auto down = hn::Set(d, 1.0);
     auto py = hn::Set(d, double(b.j0) + b.sy);
     std::uint64_t any = 0;
     for (int r = 0; r < b.rows; ++r, py = hn::Add(py, down)) {
         ev.start_row(r);
-        const auto b_dy = hn::Mul(pb, hn::Sub(py, y0));
+        const auto b_dy = lanes_test.b_dy(py);
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         std::uint64_t open_bits = 0;
         bool seen = false;
@@ -283,7 +286,6 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes<kPerSample> lanes_test(p);
-    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
     const double px_start = double(b.i0) + b.sx;
     double py = double(b.j0) + b.sy;
@@ -293,7 +295,7 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
         undecided[r] = 0;
         if (bits == 0) continue;
         const int first = std::countr_zero(bits), last = 63 - std::countl_zero(bits);
-        const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, py), y0));
+        const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         auto px = hn::Add(hn::Set(d, px_start + first), ramp);
         std::uint64_t open_bits = 0;
@@ -318,14 +320,13 @@ HWY_INLINE bool DepthOnColumns(const Block& b, const std::uint64_t* covered, con
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes<kPerSample> lanes_test(p);
-    const auto pb = hn::Set(d, p.b), y0 = hn::Set(d, p.y0);
     VD px[kVectors];
     for (int v = 0; v < kVectors; ++v) px[v] = hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0));
     double py = double(b.j0) + b.sy;
     std::uint64_t any = 0;
     for (int r = 0; r < b.rows; ++r, py += 1) {
         const std::uint64_t bits = covered[r];
-        const auto b_dy = hn::Mul(pb, hn::Sub(hn::Set(d, py), y0));
+        const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
         std::uint64_t open_bits = 0;
         for (int v = 0; v < kVectors; ++v) {
