@@ -72,6 +72,10 @@ public:
     Coverage(const Scene& scene, const EngineChoice& engine)
         : offsets_(static_cast<std::size_t>(scene.viewport.width) * scene.viewport.height * scene.samples + 1) {
         const auto& triangles = scene.triangles;
+        // edge_numbers names each triangle's edges by 3 * triangle + edge in 32 bits.
+        if (triangles.size() > std::numeric_limits<std::uint32_t>::max() / 3)
+            throw std::length_error("rast check: " + std::to_string(triangles.size()) +
+                                    " triangles exceed 32-bit edge numbers");
         for (const Triangle& t : triangles)
             for (std::size_t index : covered(t, scene, engine)) ++offsets_[index + 1];
         // offsets_[index + 1] becomes where the sample's ids start, and the fill below moves it to where
@@ -79,10 +83,8 @@ public:
         std::uint64_t total = 0;
         for (std::size_t k = 1; k < offsets_.size(); ++k)
             total += std::exchange(offsets_[k], static_cast<std::uint32_t>(total));
-        if (total > std::numeric_limits<std::uint32_t>::max() ||
-            triangles.size() > std::numeric_limits<std::uint32_t>::max())
-            throw std::length_error("rast check: " + std::to_string(total) + " coverings of " +
-                                    std::to_string(triangles.size()) + " triangles exceed 32-bit indices");
+        if (total > std::numeric_limits<std::uint32_t>::max())
+            throw std::length_error("rast check: " + std::to_string(total) + " coverings exceed 32-bit indices");
         ids_.resize(total);
         for (std::size_t k = 0; k < triangles.size(); ++k)
             for (std::size_t index : covered(triangles[k], scene, engine))

@@ -12,10 +12,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // Two existing paths are the same file when they reach the same inode (through hard or symbolic links); a
-// path not yet there is the same as another when both resolve to one name.
+// path not yet there is the same as another when both resolve to one name. Made absolute first:
+// weakly_canonical leaves a bare relative name that does not exist as it is ("x" against "./x").
 bool same_file(const fs::path& a, const fs::path& b) {
     if (fs::exists(a) && fs::exists(b)) return fs::equivalent(a, b);
-    return fs::weakly_canonical(a) == fs::weakly_canonical(b);
+    return fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
 }
 
 // Why `path` cannot be written, or nothing if it can.

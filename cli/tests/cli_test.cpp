@@ -145,6 +145,16 @@ TEST_F(Cli, TwoOutputsOnOneFileAreRefused) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.txt"));
 }
 
+// A bare name that does not exist yet is the same file as that name under "./" (weakly_canonical alone
+// leaves the first relative and the second absolute, and the depths were written over the ids).
+TEST_F(Cli, TwoOutputsOnOneFileAreRefusedUnderRelativeNames) {
+    const std::string scene = file("corner.tri", kCorner);
+    const Result r = rast("render " + scene + " --ids-out ids.txt --depth-out ./ids.txt");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "--depth-out './ids.txt' is the same file as --ids-out 'ids.txt'")) << r.out;
+    EXPECT_FALSE(std::filesystem::exists("ids.txt"));
+}
+
 // Every output path is checked before the work, so a bad one leaves the others as they were.
 TEST_F(Cli, ABadOutputPathLeavesTheOtherOutputsUntouched) {
     const std::string scene = file("corner.tri", kCorner);

@@ -313,7 +313,7 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
 // DepthOnRuns for a block of at most kVectors vectors across: every row takes all kVectors from the
 // block's first column, its covered samples as the lanes' mask, whatever its run. A small triangle's
 // rows took one vector or two by their runs, which the loop's branch mispredicted (8% of a small-scene
-// render); the lanes outside the run cost less. px is stepped as DepthOnRuns steps it.
+// render); the lanes outside the run cost less. px = i + sx is exact, as in DepthOnRuns.
 template <int kVectors, bool kPerSample>
 HWY_INLINE bool DepthOnColumns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
                                std::uint64_t* undecided) {

@@ -1,7 +1,7 @@
 // The inner loops over a block of samples (up to 64 x 64 pixels, one sample index), in SIMD with runtime
 // dispatch (Highway): coverage by edge functions and the z-buffer test, one call per triangle and tile
-// (integer edges find each row's run of covered samples first, then depth-test the run; the other kinds
-// are fused with the test). Bit k of a row mask stands for the sample of pixel i0 + k. Every lane
+// (integer edges find each row's run of covered samples first, then depth-test the run, or a narrow
+// block's whole rows masked by it; the other kinds are fused with the test). Bit k of a row mask stands for the sample of pixel i0 + k. Every lane
 // computes exactly what the scalar definition in the comments computes (integers, or the same IEEE
 // operations without contraction), so the result does not depend on the instruction set.
 #pragma once
@@ -104,7 +104,8 @@ bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPla
                 std::uint64_t* undecided);
 
 // depth_runs for integer edges that fit in 32 bits, each row's run found first in lanes of 32 bits
-// (twice as many per vector as the depth test's).
+// (twice as many per vector as the depth test's). A block up to four depth vectors across is tested by
+// whole rows, each lane masked by the run: the result is the same.
 bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 

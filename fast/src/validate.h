@@ -1,5 +1,5 @@
-// The checks of the public functions' input: bad input is a std::invalid_argument saying what is wrong,
-// before anything is computed or allocated for it.
+// The checks of the public functions' input: bad input is a std::invalid_argument saying what is wrong
+// (when, fast.h says).
 #pragma once
 
 #include <rast/fast.h>

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace rast::fast {
 namespace {
@@ -29,6 +31,28 @@ TEST_P(Depth, EqualDepthGoesToTheLowerId) {
         for (int i = 0; i < 4; ++i) {
             EXPECT_EQ(fb.id(i, j), 0);
             EXPECT_EQ(fb.depth[fb.index(i, j)], 0.25);
+        }
+}
+
+// Two flat triangles over the same samples, a least step apart in depth (where the double test cannot
+// decide and the exact order of constant depths does), or at -0 and +0, which are equal: the nearer wins
+// in either id order, and the tie goes to the lower id.
+TEST_P(Depth, FlatTrianglesAnUlpApartAreOrderedExactly) {
+    Scene scene;
+    scene.viewport = {4, 4};
+    const Triangle t = tri(0, 0, 8, 0, 0, 8, 0);
+    const double least = std::numeric_limits<double>::denorm_min();
+    for (const auto& [near, far] : {std::pair{0.0, least}, std::pair{1.0, 1.0 + 0x1p-52}, std::pair{-least, 0.0},
+                                    std::pair{-0.0, 0.0}, std::pair{0.0, -0.0}})
+        for (const bool near_first : {true, false}) {
+            const Triangle n = with_z(t, near, near, near), f = with_z(t, far, far, far);
+            scene.triangles = near_first ? std::vector{n, f} : std::vector{f, n};
+            const bool tie = near == far;
+            const std::int32_t winner = tie || near_first ? 0 : 1;
+            const Framebuffer fb = render(scene, {GetParam(), 1});
+            for (int j = 0; j < 4; ++j)
+                for (int i = 0; i < 4; ++i)
+                    EXPECT_EQ(fb.id(i, j), winner) << near << " against " << far << ", nearer first " << near_first;
         }
 }
 

@@ -33,11 +33,12 @@
 // dynamic dispatch: SSE4, AVX2, AVX-512 where present): coverage is exact or evaluated in the same IEEE
 // operations everywhere, and each tile composes its triangles in id order.
 //
-// Input. Every function throws std::invalid_argument, before computing or allocating anything, for a
-// viewport that is not 1..2^24 pixels on each side or whose samples number more than 2^32 (a
-// framebuffer of 48 GiB), a sample count other than 1, 4, 8, 16, a non-finite coordinate (naming the
-// triangle and the vertex) or sample position, a Precision outside the enum, or a thread count outside
-// 0..1024. name() alone answers "unknown" for such a Precision.
+// Input. Every function throws std::invalid_argument for a viewport that is not 1..2^24 pixels on each
+// side or whose samples number more than 2^32 (a framebuffer of 48 GiB), a sample count other than 1, 4,
+// 8, 16, a non-finite coordinate (naming the triangle and the vertex) or sample position, a Precision
+// outside the enum, or a thread count outside 0..1024: the sizes before anything is allocated for them,
+// the coordinates while the triangles are binned, and always before the target framebuffer is touched.
+// name() alone answers "unknown" for such a Precision.
 #pragma once
 
 #include <rast/scene.h>
