@@ -27,7 +27,14 @@ void TokenLines::expect(const std::string& what) {
     if (!next()) fail("the file ends before " + what);
 }
 
-double TokenLines::number(std::size_t k) const { return parse_finite_double(tokens_[k], file_, line_); }
+double TokenLines::number(std::size_t k) const {
+    const double value = parse_finite_double(tokens_[k], file_, line_);
+    // Of what parse_finite_double accepts, only a hex float holds an 'x'. OpenMesh reads numbers with C++
+    // streams, which read a hex float's leading "0" and stop at the 'x'.
+    if (tokens_[k].find_first_of("xX") != std::string::npos)
+        fail("hex float " + quote_token(tokens_[k]) + ": mesh files take decimal numbers (OpenMesh misreads hex floats)");
+    return value;
+}
 
 long long TokenLines::integer(const std::string& text) const { return parse_integer(text, file_, line_); }
 

@@ -23,6 +23,8 @@ public:
     const std::vector<std::string>& tokens() const { return tokens_; }
     std::size_t size() const { return tokens_.size(); }
     const std::string& operator[](std::size_t k) const { return tokens_[k]; }
+    // Token k as a decimal number (see parse_finite_double), else ParseError with the line: also for a hex
+    // float, which OpenMesh does not read as written.
     double number(std::size_t k) const;
     long long integer(std::size_t k) const { return integer(tokens_[k]); }
     long long integer(const std::string& text) const;

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <iterator>
 #include <limits>
 #include <string>
 
@@ -226,6 +229,40 @@ TEST_F(MeshFiles, ReadsCoordinatesUpToFloatMaxAndLargerValuesThatAreNotCoordinat
                         "property list uchar int vertex_indices\nend_header\n"
                         "0 0 0 1e300\n1 0 0 0\n0 1 0 -1e300\n3 0 1 2\n"));
     EXPECT_EQ(m.positions.at(2), (Vec3{0, 1, 0}));
+}
+
+// OpenMesh reads numbers with C++ streams, which read a hex float's "0" and stop at the 'x': it had dropped
+// the OBJ vertex (shifting every later index: the face below became (0,0,0) (1,0,0) (0,1,0)), zeroed the
+// STL vertex, y and z too, and made garbage of the OFF file. A hex float is refused wherever a number is.
+TEST_F(MeshFiles, RejectsHexFloatsWithLine) {
+    const std::string reason = ": mesh files take decimal numbers (OpenMesh misreads hex floats)";
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nv 0x1p-2 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "a.obj:2: hex float '0x1p-2'" + reason);
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0 -0X1P0\n"), "a.obj:1: hex float '-0X1P0'" + reason);
+    EXPECT_EQ(error_of("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0x1.8p1\n"), "a.off:4: hex float '0x1.8p1'" + reason);
+    const std::string facet = "solid s\nfacet normal 0 0 1\nouter loop\n";
+    EXPECT_EQ(error_of("a.stl", facet + "vertex 0 0 0\nvertex +0x1p-2 5 6\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n"),
+              "a.stl:5: hex float '+0x1p-2'" + reason);
+    EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0x0p0 0 1\n"), "a.stl:2: hex float '0x0p0'" + reason);
+    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nproperty double quality\nelement face 1\n"
+                            "property list uchar int vertex_indices\nend_header\n";
+    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 0\n0x1p-2 0 0 0\n"), "a.ply:12: hex float '0x1p-2'" + reason);
+    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 0x10\n"), "a.ply:11: hex float '0x10'" + reason);
+}
+
+// The decimal spellings that strtod and C++ streams both read, read as strtof reads them: the checker lets
+// through only what OpenMesh reads as written.
+TEST_F(MeshFiles, ReadsEveryDecimalSpellingAsStrtofDoes) {
+    const char* const spellings[] = {".5", "5.", "+1", "-0", "1E2", "-2.5e-1", "1e-46", "1e-40", "0.1", "16777217"};
+    std::string obj;
+    for (const char* x : spellings) obj += std::string("v ") + x + " 0 1\n";
+    const Mesh m = read_mesh(write("t.obj", obj + "f 1 2 3\n"));
+    ASSERT_EQ(m.positions.size(), std::size(spellings));
+    for (std::size_t k = 0; k < std::size(spellings); ++k) {
+        const float expected = std::strtof(spellings[k], nullptr);
+        EXPECT_EQ(m.positions[k].x, expected) << spellings[k];
+        EXPECT_EQ(std::signbit(m.positions[k].x), std::signbit(expected)) << spellings[k];
+    }
 }
 
 TEST_F(MeshFiles, RejectsMalformedAsciiStlWithLine) {
