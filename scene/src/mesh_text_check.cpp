@@ -7,6 +7,7 @@
 #include <fstream>
 #include <vector>
 
+#include "number_token.h"
 #include "ply_check.h"
 #include "rast/parse_error.h"
 #include "token_lines.h"
@@ -144,11 +145,11 @@ void check_binary_stl(std::istream& in, std::uint32_t count, const std::string& 
 
 }  // namespace
 
-double float_coordinate(const TokenLines& in, std::size_t k) {
-    const double value = in.number(k);
-    // Beyond FLT_MAX by half a float ulp or more, the value rounds to infinity.
-    if (std::isinf(static_cast<float>(value)))
-        in.fail("number " + quote_token(in[k]) + " exceeds float range: meshes are read as float");
+float float_coordinate(const TokenLines& in, std::size_t k) {
+    in.number(k);
+    // OpenMesh reads it with strtof.
+    const float value = read_float(in[k]);
+    if (std::isinf(value)) in.fail("number " + quote_token(in[k]) + " exceeds float range: meshes are read as float");
     return value;
 }
 

@@ -28,9 +28,9 @@ struct MeshFileCheck {
 MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension);
 
 // Token k of the current line as a vertex coordinate, which OpenMesh reads as a float: a number (see
-// TokenLines::number) that rounds to a finite float (3.4028235e38 becomes FLT_MAX; 3.4028236e38 is refused),
-// else ParseError with the line. OpenMesh drops a vertex it cannot read, which shifts the index of every
-// vertex after it, and blames a face.
-double float_coordinate(const TokenLines& in, std::size_t k);
+// TokenLines::number) that strtof reads as a finite float (see read_float: 3.4028235e38 becomes FLT_MAX;
+// 3.4028236e38 is refused), else ParseError with the line. OpenMesh drops a vertex it cannot read, which
+// shifts the index of every vertex after it, and blames a face.
+float float_coordinate(const TokenLines& in, std::size_t k);
 
 }  // namespace rast::detail

@@ -52,6 +52,8 @@ double parse_finite_double(const std::string& token, const std::string& file, st
     return value;
 }
 
+float read_float(const std::string& token) { return strtof_l(token.c_str(), nullptr, c_locale()); }
+
 long long parse_integer(const std::string& token, const std::string& file, std::int64_t line) {
     long long value = 0;
     const char* last = token.data() + token.size();

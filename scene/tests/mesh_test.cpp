@@ -265,6 +265,21 @@ TEST_F(MeshFiles, ReadsEveryDecimalSpellingAsStrtofDoes) {
     }
 }
 
+// FLT_MAX + half an ulp is 340282356779733661637539395458142568448 (2^128 - 2^103): strtof, as OpenMesh
+// reads, rounds anything below it to FLT_MAX and it, a tie, to the even neighbour, infinity. The check agrees
+// to the last digit, also where the nearest double is that tie: read as a double first, one below it and
+// 3.4028235677973366e38 (1.6e22 below it) had narrowed to infinity and were refused.
+TEST_F(MeshFiles, FloatRangeEndsExactlyWhereStrtofsDoes) {
+    const float max = std::numeric_limits<float>::max();
+    for (const std::string below : {"340282356779733661637539395458142568447", "3.4028235677973366e38"}) {
+        const Mesh m = read_mesh(write("t.obj", "v 0 0 0\nv " + below + " 0 0\nv 0 -" + below + " 0\nf 1 2 3\n"));
+        EXPECT_EQ(m.positions.at(1), (Vec3{max, 0, 0})) << below;
+        EXPECT_EQ(m.positions.at(2), (Vec3{0, -max, 0})) << below;
+    }
+    EXPECT_EQ(error_of("a.obj", "v 0 -340282356779733661637539395458142568448 0\n"),
+              "a.obj:1: number '-340282356779733661637539395458142568448' exceeds float range: meshes are read as float");
+}
+
 TEST_F(MeshFiles, RejectsMalformedAsciiStlWithLine) {
     EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"),
               "a.stl:6: a facet has 2 vertices; STL facets are triangles");
