@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <charconv>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string_view>
@@ -311,6 +314,13 @@ public:
 
     void skip(const PlyType& type, const PlyElement& e, long long row) { bits(type, e, row); }
 
+    // A float or a double.
+    double real(const PlyType& type, const PlyElement& e, long long row) {
+        const std::uint64_t value = bits(type, e, row);
+        return type.size == 8 ? std::bit_cast<double>(value)
+                              : std::bit_cast<float>(static_cast<std::uint32_t>(value));
+    }
+
     long long integer(const PlyType& type, const PlyElement& e, long long row) {
         const std::uint64_t value = bits(type, e, row);
         if (!type.is_signed) return static_cast<long long>(value);
@@ -338,6 +348,18 @@ private:
     std::uintmax_t remaining_;
 };
 
+// OpenMesh narrows a double it reads as float: a finite one from FLT_MAX + half an ulp on becomes infinity
+// (a position would then be blamed as non-finite, a normal kept so). Refused as in ASCII; a non-finite
+// position is reported as such after the read.
+void check_float_range(double value, const PlyElement& e, long long row, const PlyProperty& p,
+                       const std::string& file) {
+    if (!std::isfinite(value) || !std::isinf(static_cast<float>(value))) return;
+    char text[32];
+    const std::string shortest(text, std::to_chars(text, text + sizeof text, value).ptr);
+    throw ParseError(file, 0, record(e, row) + ": " + p.name + " = " + shortest +
+                                  " exceeds float range: meshes are read as float");
+}
+
 MeshFileCheck check_binary_data(std::istream& in, const PlyHeader& header, const std::string& file,
                                 std::uintmax_t remaining) {
     MeshFileCheck result{0, std::nullopt};
@@ -347,7 +369,10 @@ MeshFileCheck check_binary_data(std::istream& in, const PlyHeader& header, const
         for (long long row = 0; row < e.count; ++row)
             for (const PlyProperty& p : e.properties) {
                 if (!p.count_type) {
-                    data.skip(*p.type, e, row);
+                    if (read_as_float(e, p.name))
+                        check_float_range(data.real(*p.type, e, row), e, row, p, file);
+                    else
+                        data.skip(*p.type, e, row);
                     continue;
                 }
                 const long long n = data.integer(*p.count_type, e, row);

@@ -20,8 +20,9 @@ namespace rast::detail {
 // OpenMesh reads; counts as uchar, uint8, uint16 or int, integer indices), then 'end_header'; no control
 // characters but tabs and the "\r" of "\r\n"; a vertex with x, y and z. Binary data must start where
 // OpenMesh looks for it, hold at least COUNT times the smallest record of each element, and end with the
-// last element. Every face, in either format, has at least 3 vertex indices, each in range and used once; an
-// ASCII vertex's x, y, z, nx, ny, nz, u, v, s, t are within float's range (see float_coordinate).
+// last element. Every face, in either format, has at least 3 vertex indices, each in range and used once; a
+// vertex's x, y, z, nx, ny, nz, u, v, s, t, when finite, are within float's range (in ASCII, see
+// float_coordinate; in binary, a double that narrows to infinity is refused).
 // Throws ParseError: with the line for the header and the ASCII data, with the record for binary data.
 MeshFileCheck check_ply(std::istream& in, const std::string& file, std::uintmax_t size);
 

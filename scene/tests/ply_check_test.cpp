@@ -6,6 +6,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include "mesh_files.h"
@@ -27,12 +28,13 @@ class Data {
 public:
     explicit Data(bool big_endian = false) : big_endian_(big_endian) {}
     Data& f32(float v) { return put(std::bit_cast<std::uint32_t>(v), 4); }
+    Data& f64(double v) { return put(std::bit_cast<std::uint64_t>(v), 8); }
     Data& i32(std::int32_t v) { return put(static_cast<std::uint32_t>(v), 4); }
     Data& u8(std::uint8_t v) { return put(v, 1); }
     const std::string& bytes() const { return bytes_; }
 
 private:
-    Data& put(std::uint32_t v, int size) {
+    Data& put(std::uint64_t v, int size) {
         for (int k = 0; k < size; ++k) bytes_ += static_cast<char>(v >> 8 * (big_endian_ ? size - 1 - k : k));
         return *this;
     }
@@ -149,6 +151,29 @@ TEST_F(PlyFiles, AsciiIntegerCoordinatesRead) {
     ASSERT_EQ(m.positions.size(), 3u);
     EXPECT_EQ(m.positions[1], (Vec3{2, 0, 0}));
     EXPECT_EQ(m.faces.size(), 1u);
+}
+
+// OpenMesh narrows a binary double coordinate to float. FLT_MAX + half an ulp (0x1.ffffffp127), a tie,
+// narrows to infinity, and was refused as "vertex 1 has a non-finite coordinate"; the double below it
+// narrows to FLT_MAX and reads. Infinity itself is non-finite, as it says.
+TEST_F(PlyFiles, RejectsBinaryDoubleCoordinatesBeyondFloatRangeAsSuch) {
+    const std::string header = kLittle +
+                               "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+                               "property double nx\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const auto ply = [&](double x, double nx) {
+        Data d;
+        d.f64(0).f64(0).f64(0).f64(0).f64(x).f64(0).f64(0).f64(nx).f64(0).f64(1).f64(0).f64(0).u8(3).i32(0).i32(1).i32(2);
+        return header + d.bytes();
+    };
+    const double tie = 0x1.ffffffp127, below = 0x1.fffffefffffffp127, inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(error_of("a.ply", ply(1e39, 0)), "a.ply: vertex 1 of 3: x = 1e+39 exceeds float range: meshes are read as float");
+    EXPECT_EQ(error_of("a.ply", ply(-tie, 0)),
+              "a.ply: vertex 1 of 3: x = -3.4028235677973366e+38 exceeds float range: meshes are read as float");
+    EXPECT_EQ(error_of("a.ply", ply(0, tie)),
+              "a.ply: vertex 1 of 3: nx = 3.4028235677973366e+38 exceeds float range: meshes are read as float");
+    EXPECT_EQ(error_of("a.ply", ply(inf, 0)), "a.ply: vertex 1 has a non-finite coordinate");
+    const Mesh m = read_mesh(write("b.ply", ply(-below, below)));
+    EXPECT_EQ(m.positions.at(1), (Vec3{-std::numeric_limits<float>::max(), 0, 0}));
 }
 
 TEST_F(PlyFiles, RejectsACountThatDoesNotFitTheFile) {
