@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+
 namespace rast::cli {
 
 fast::Options EngineChoice::fast_options() const {
@@ -11,8 +13,12 @@ fast::Options EngineChoice::fast_options() const {
 
 std::string EngineChoice::describe() const {
     if (is_reference()) return "reference (exact)";
-    return "fast " + precision + ", " + (threads == 0 ? std::string("all") : std::to_string(threads)) +
-           (threads == 1 ? " thread" : " threads");
+    // What runs: a count above the machine's is not what the user would see in the time taken.
+    const int limit = fast::max_threads(), runs = threads == 0 ? limit : std::min(threads, limit);
+    std::string text = "fast " + precision + ", " + std::to_string(runs) + (runs == 1 ? " thread" : " threads");
+    if (threads == 0) text += " (all)";
+    else if (threads > limit) text += " (" + std::to_string(threads) + " asked; the most this machine runs)";
+    return text;
 }
 
 void add_engine_options(CLI::App& command, EngineChoice& choice) {
@@ -37,7 +43,7 @@ void add_engine_options(CLI::App& command, EngineChoice& choice) {
         })
         ->check(for_fast_only)
         ->capture_default_str();
-    command.add_option("--threads", choice.threads, "Fast path threads (0: all cores); the result is the same")
+    command.add_option("--threads", choice.threads, "Fast path threads (0: all cores; at most the cores); the result is the same")
         ->check(CLI::Range(0, 1024))
         ->check(for_fast_only)
         ->capture_default_str();

@@ -18,7 +18,7 @@ struct EngineChoice {
 
     bool is_reference() const { return engine == "reference"; }
     fast::Options fast_options() const;
-    // "reference" or "fast fixed8, 2 threads"
+    // "reference (exact)" or "fast fixed8, 2 threads", with the threads that run (fast::max_threads)
     std::string describe() const;
 };
 

@@ -56,6 +56,20 @@ TEST_F(Cli, FastPrecisionsAgreeOnSnappedVertices) {
     }
 }
 
+// Threads beyond what the machine runs are not asked of TBB (which would refuse them with a warning on
+// stderr), and the engine line names the threads that ran.
+TEST_F(Cli, MoreThreadsThanTheMachineRuns) {
+    const std::string scene = file("square.tri", kSplitSquare);
+    const Result r = rast("render " + scene + " --engine fast --threads 1024 --ids-out " + (dir / "ids.txt").string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "(1024 asked; the most this machine runs)")) << r.out;
+    EXPECT_FALSE(contains(r.out, "TBB")) << r.out;
+    EXPECT_EQ(read("ids.txt"), kSplitSquareIds);
+    const Result all = rast("render " + scene + " --engine fast --threads 0");
+    ASSERT_EQ(all.status, 0) << all.out;
+    EXPECT_TRUE(contains(all.out, " threads (all)") || contains(all.out, " thread (all)")) << all.out;
+}
+
 TEST_F(Cli, DepthAtPixelCentres) {
     // z = x on a triangle covering the left column of a 2x1 viewport; the right pixel is empty.
     const Result r = rast("render " + file("ramp.tri", "viewport 2 1\ntri 0 0 0  1 0 1  0 4 0\n") + " --depth-out " +

@@ -12,6 +12,7 @@
 #include <rast/fast_faults.h>
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -594,6 +595,11 @@ struct Workspace {
     int arena_threads = -1;  // Options::threads the arena was made for
 };
 
+// max_threads (fast.h).
+inline int thread_limit() {
+    return static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+}
+
 template <Fault F>
 void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, Workspace& ws) {
     validate(scene.viewport, scene.samples);
@@ -613,7 +619,8 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     const std::size_t tiles = tiles_x * static_cast<std::size_t>((c.vp.height + kTile - 1) / kTile);
 
     if (!ws.arena || ws.arena_threads != options.threads) {
-        const int concurrency = options.threads == 0 ? int{tbb::task_arena::automatic} : options.threads;
+        const int concurrency = options.threads == 0 ? int{tbb::task_arena::automatic}
+                                                     : std::min(options.threads, thread_limit());
         ws.arena = std::make_unique<tbb::task_arena>(concurrency);
         ws.arena_threads = options.threads;
     }

@@ -26,6 +26,8 @@ void Renderer::render(const Scene& scene, Framebuffer& target, const Options& op
     detail::render_scene<Fault::none>(scene, options, target, *workspace_);
 }
 
+int max_threads() { return detail::thread_limit(); }
+
 std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int samples, Precision precision) {
     return detail::covered_by<Fault::none>(t, vp, samples, precision);
 }

@@ -56,8 +56,14 @@ enum class Precision { fixed4, fixed8, fixed16, float32, float64 };
 
 struct Options {
     Precision precision = Precision::fixed8;
-    int threads = 1;  // 0..1024; 0: all hardware threads. The result is identical for every count.
+    // 0..1024; 0: as many as max_threads(), as does a count above it. The result is identical for every count.
+    int threads = 1;
 };
+
+// The most threads a render runs: the hardware threads this process may use, or the limit the application
+// set with tbb::global_control. Asking for more would oversubscribe the cores, and TBB would ignore the
+// request with a warning on stderr.
+int max_threads();
 
 // "fixed4", "fixed8", "fixed16", "float32", "float64" ("unknown" for a value outside the enum);
 // parse_precision is its inverse.
