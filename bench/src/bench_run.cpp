@@ -260,6 +260,11 @@ Report run_bench(const Config& config, std::ostream& progress) {
     report.machine = {cpu_model(), static_cast<unsigned>(sysconf(_SC_NPROCESSORS_ONLN)), load_average(), 0,
                       utc_now()};
     if (config.speed) {
+        // A render runs at most fast::max_threads() threads: on a smaller machine the rows for more name
+        // the count asked, not the count that ran.
+        if (fast::max_threads() < kThreads.back())
+            report.notes.push_back("this machine runs " + std::to_string(fast::max_threads()) +
+                                   " fast-path thread(s): its rows for more threads ran on that many");
         for (BenchScene& s : main_scenes(config, plan)) {
             measure(s, plan, true, report.speed, report.errors, report.notes, progress);
             report.scenes.push_back(s.info);
