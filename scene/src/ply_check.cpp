@@ -67,6 +67,16 @@ bool read_as_float(const PlyElement& e, std::string_view property) {
                kFloatVertexProperties.end();
 }
 
+// The vertex colors OpenMesh reads: from text, one of an integer type as an int, so that a larger value
+// fails the stream and shifts every value after it.
+constexpr std::array<std::string_view, 7> kColorProperties{"red",         "green",         "blue",        "alpha",
+                                                           "diffuse_red", "diffuse_green", "diffuse_blue"};
+
+bool is_color(const PlyElement& e, std::string_view property) {
+    return e.name == "vertex" &&
+           std::find(kColorProperties.begin(), kColorProperties.end(), property) != kColorProperties.end();
+}
+
 enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
 
 struct PlyHeader {
@@ -273,6 +283,41 @@ PlyHeader read_header(std::istream& in, const std::string& file, std::uintmax_t 
     return header;
 }
 
+// Token k as a value of the integer type `type`, of what `kind` and `name` say ("property", "x"): an
+// integer within the type's range, and within int's if `as_int`. Else ParseError with the line.
+long long integer_of_type(const TokenLines& in, std::size_t k, const PlyType& type, const char* kind,
+                          const std::string& name, bool as_int = false) {
+    const auto fail = [&](const std::string& why) {
+        in.fail(std::string(kind) + " '" + name + "' of type '" + std::string(type.name) + "': " + why);
+    };
+    long long value = 0;
+    try {
+        value = in.integer(k);
+    } catch (const ParseError& e) {
+        fail(e.message);
+    }
+    const int bits = 8 * type.size;
+    const long long low = type.is_signed ? -(1LL << (bits - 1)) : 0;
+    const long long type_high = type.is_signed ? (1LL << (bits - 1)) - 1 : (1LL << bits) - 1;
+    const bool capped = as_int && type_high > std::numeric_limits<int>::max();
+    const long long high = capped ? std::numeric_limits<int>::max() : type_high;
+    if (value < low || value > high)
+        fail(in[k] + " is out of range (" + std::to_string(low) + " to " + std::to_string(high) +
+             (capped ? ": OpenMesh reads colors as int)" : ")"));
+    return value;
+}
+
+// Token k as a value of the property p that is not a list: a number its type holds, and one OpenMesh reads
+// as written where it reads it.
+void check_ascii_value(const TokenLines& in, std::size_t k, const PlyElement& e, const PlyProperty& p) {
+    if (p.type->integer)
+        integer_of_type(in, k, *p.type, "property", p.name, is_color(e, p.name));
+    else if (p.type->size == 4 || read_as_float(e, p.name))
+        float_coordinate(in, k);
+    else
+        in.number(k);
+}
+
 MeshFileCheck check_ascii_data(TokenLines& in, const PlyHeader& header) {
     MeshFileCheck result{0, std::nullopt};
     const long long vertices = vertex_count(header);
@@ -283,18 +328,16 @@ MeshFileCheck check_ascii_data(TokenLines& in, const PlyHeader& header) {
             for (const PlyProperty& p : e.properties) {
                 if (at >= in.size()) in.fail("too few values for element '" + e.name + "': " + values(in.size()));
                 if (!p.count_type) {
-                    if (read_as_float(e, p.name))
-                        float_coordinate(in, at++);
-                    else
-                        in.number(at++);
+                    check_ascii_value(in, at++, e, p);
                     continue;
                 }
-                const long long n = in.integer(at++);
+                const long long n = integer_of_type(in, at++, *p.count_type, "count of list", p.name);
                 if (n < 3) in.fail("a face needs at least 3 vertices, got " + std::to_string(n));
                 if (n > static_cast<long long>(in.size() - at))
                     in.fail("list '" + p.name + "' of " + std::to_string(n) + " items does not fit the line");
                 FaceCheck face(in.file(), in.line(), vertices);
-                for (long long k = 0; k < n; ++k, ++at) face.add(in.integer(at), in[at]);
+                for (long long k = 0; k < n; ++k, ++at)
+                    face.add(integer_of_type(in, at, *p.type, "item of list", p.name), in[at]);
                 *result.triangles += static_cast<std::size_t>(n) - 2;
             }
             if (at != in.size())

@@ -22,7 +22,9 @@ namespace rast::detail {
 // OpenMesh looks for it, hold at least COUNT times the smallest record of each element, and end with the
 // last element. Every face, in either format, has at least 3 vertex indices, each in range and used once; a
 // vertex's x, y, z, nx, ny, nz, u, v, s, t, when finite, are within float's range (in ASCII, see
-// float_coordinate; in binary, a double that narrows to infinity is refused).
+// float_coordinate; in binary, a double that narrows to infinity is refused). An ASCII value is one its type
+// holds: an integer within the type's range (a color's also within int's, as OpenMesh reads it), a float
+// within float's range.
 // Throws ParseError: with the line for the header and the ASCII data, with the record for binary data.
 MeshFileCheck check_ply(std::istream& in, const std::string& file, std::uintmax_t size);
 

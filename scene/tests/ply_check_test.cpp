@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "mesh_files.h"
 #include "rast/mesh.h"
@@ -174,6 +175,40 @@ TEST_F(PlyFiles, RejectsBinaryDoubleCoordinatesBeyondFloatRangeAsSuch) {
     EXPECT_EQ(error_of("a.ply", ply(inf, 0)), "a.ply: vertex 1 has a non-finite coordinate");
     const Mesh m = read_mesh(write("b.ply", ply(-below, below)));
     EXPECT_EQ(m.positions.at(1), (Vec3{-std::numeric_limits<float>::max(), 0, 0}));
+}
+
+// In ASCII a value must be one its declared type holds. OpenMesh reads x as float whatever its type, so
+// 'property int x' with 1.5 had read 1.5; it reads a color of an integer type as int, so 1.5 or a value
+// beyond int's range failed its stream and shifted every value after it.
+TEST_F(PlyFiles, RejectsAsciiValuesTheirTypeDoesNotHold) {
+    const std::string header = kAscii +
+                               "element vertex 3\nproperty int x\nproperty float y\nproperty float z\n"
+                               "property uchar red\nproperty uint green\nproperty float quality\n"
+                               "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    // Vertex 1 (line 14), then the face (line 16).
+    const auto ply = [&](const std::string& vertex, const std::string& face = "3 0 1 2") {
+        return header + "0 0 0 0 0 0\n" + vertex + "\n0 1 0 0 0 0\n" + face + "\n";
+    };
+    const Mesh m = read_mesh(write("b.ply", ply("-2147483648 0 0 255 2147483647 3.4e38")));
+    EXPECT_EQ(m.positions.at(1), (Vec3{-2147483648.0, 0, 0}));
+    const std::pair<std::string, std::string> bad[] = {
+        {ply("1.5 0 0 0 0 0"), "a.ply:14: property 'x' of type 'int': expected an integer, got '1.5'"},
+        {ply("1e39 0 0 0 0 0"), "a.ply:14: property 'x' of type 'int': expected an integer, got '1e39'"},
+        {ply("2147483648 0 0 0 0 0"),
+         "a.ply:14: property 'x' of type 'int': 2147483648 is out of range (-2147483648 to 2147483647)"},
+        {ply("1 0 0 1.5 0 0"), "a.ply:14: property 'red' of type 'uchar': expected an integer, got '1.5'"},
+        {ply("1 0 0 256 0 0"), "a.ply:14: property 'red' of type 'uchar': 256 is out of range (0 to 255)"},
+        {ply("1 0 0 -1 0 0"), "a.ply:14: property 'red' of type 'uchar': -1 is out of range (0 to 255)"},
+        {ply("1 0 0 0 2147483648 0"), "a.ply:14: property 'green' of type 'uint': 2147483648 is out of range "
+                                      "(0 to 2147483647: OpenMesh reads colors as int)"},
+        {ply("1 0 0 0 0 1e39"), "a.ply:14: number '1e39' exceeds float range: meshes are read as float"},
+        {ply("1 0 0 0 0 0", "3.0 0 1 2"),
+         "a.ply:16: count of list 'vertex_indices' of type 'uchar': expected an integer, got '3.0'"},
+        {ply("1 0 0 0 0 0", "256 0 1 2"),
+         "a.ply:16: count of list 'vertex_indices' of type 'uchar': 256 is out of range (0 to 255)"},
+        {ply("1 0 0 0 0 0", "3 0 1 2.5"),
+         "a.ply:16: item of list 'vertex_indices' of type 'int': expected an integer, got '2.5'"}};
+    for (const auto& [file, message] : bad) EXPECT_EQ(error_of("a.ply", file), message);
 }
 
 TEST_F(PlyFiles, RejectsACountThatDoesNotFitTheFile) {
