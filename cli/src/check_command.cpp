@@ -5,6 +5,7 @@
 // status.
 #include "commands.h"
 #include "engine_choice.h"
+#include "output_paths.h"
 #include "scene_input.h"
 
 #include <rast/exact_geometry.h>
@@ -187,6 +188,14 @@ std::string command_line(const CheckOptions& o) {
     return text;
 }
 
+std::string engine_name(const CheckOptions& o) { return o.engine.is_reference() ? "reference" : o.engine.precision; }
+
+// Where a violation is kept: one file per input and engine, replaced by the next run's.
+fs::path case_file(const CheckOptions& o) {
+    const std::string name = "check-" + fs::path(o.input.path).stem().string() + "-" + engine_name(o) + ".tri";
+    return fs::path(o.corpus_out) / name;
+}
+
 // The violation as a corpus case: the triangles that cover the first violating sample. For a scene
 // they are a folded or cracked tiling, which watertight rejects; for a mesh, front and back faces
 // overlap by nature, so the case names the per-triangle properties that catch a wrong coverage.
@@ -194,21 +203,21 @@ fs::path keep_case(const CheckOptions& o, const Scene& scene, const Coverage& co
                    bool mesh) {
     Scene kept{scene.viewport, scene.samples, {}};
     for (std::uint32_t k : coverage.at(first.sample)) kept.triangles.push_back(scene.triangles[k]);
-    const std::string engine = o.engine.is_reference() ? "reference" : o.engine.precision;
+    const std::string engine = engine_name(o);
     const std::string where = describe_sample(scene.viewport, scene.samples, first.sample);
     const TriHeader header{
         {"properties", mesh ? "tie_rule float_within_bound" : "watertight"},
         {"why", "rast check [" + engine + "]: " + where + " " + first.what},
         {"found-by", "rast check"},
         {"reproduce", command_line(o)}};
-    const fs::path file =
-        fs::path(o.corpus_out) / ("check-" + fs::path(o.input.path).stem().string() + "-" + engine + ".tri");
+    const fs::path file = case_file(o);
     fs::create_directories(file.parent_path());
     write_tri_file(file, kept, header);
     return file;
 }
 
 bool run_check(const CheckOptions& o) {
+    check_output_paths({o.input.path}, {{"--corpus-out", case_file(o).string(), true}});
     const bool mesh = o.input.is_mesh();
     const Scene scene = o.input.load();
     std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, "
@@ -256,13 +265,10 @@ void add_check_command(CLI::App& app, int& status) {
     add_engine_options(*cmd, o->engine);
     // Coverage is counted triangle by triangle, on one thread: the option would be ignored.
     cmd->remove_option(cmd->get_option("--threads"));
-    // Checked before the work: the folder is made only when a violation is found.
+    // The folder is made only when a violation is found; the case's path is checked before the work (an
+    // empty folder would put it in the working folder).
     cmd->add_option("--corpus-out", o->corpus_out, "Folder for the corpus case a violation is written to")
-        ->check([](const std::string& folder) -> std::string {
-            if (folder.empty()) return "the path is empty";
-            if (fs::exists(folder) && !fs::is_directory(folder)) return "'" + folder + "' exists and is not a folder";
-            return {};
-        })
+        ->check([](const std::string& folder) -> std::string { return folder.empty() ? "the path is empty" : ""; })
         ->capture_default_str();
     cmd->add_option("--show", o->show, "How many violating samples to print")
         ->check([](const std::string& count) -> std::string {

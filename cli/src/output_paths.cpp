@@ -20,14 +20,17 @@ bool same_file(const fs::path& a, const fs::path& b) {
 }
 
 // Why `path` cannot be written, or nothing if it can.
-std::optional<std::string> unwritable(const fs::path& path) {
+std::optional<std::string> unwritable(const fs::path& path, bool makes_folders) {
     if (path.empty()) return "the path is empty";
     if (!path.has_filename()) return "the path names a folder, not a file";
     const fs::file_status status = fs::status(path);
     if (fs::is_directory(status)) return "is a folder";
     // The file is replaced by renaming a new one over it: that would replace a device or a pipe, not write to it.
     if (fs::exists(status) && !fs::is_regular_file(status)) return "exists and is not a regular file";
-    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    // The missing folders would be made in the nearest one that exists.
+    if (makes_folders)
+        while (!fs::exists(folder) && folder != ".") folder = folder.has_parent_path() ? folder.parent_path() : ".";
     if (!fs::exists(folder)) return "its folder '" + folder.string() + "' does not exist";
     if (!fs::is_directory(folder)) return "its parent '" + folder.string() + "' is not a folder";
     // The new file is made in the folder and renamed into place, which needs write and search permission.
@@ -45,7 +48,8 @@ void check_output_paths(const std::vector<fs::path>& inputs, const std::vector<O
         if (!output.path) continue;
         const std::string named = output.option + " '" + *output.path + "'";
         try {
-            if (const auto why = unwritable(*output.path)) throw std::runtime_error(named + ": " + *why);
+            if (const auto why = unwritable(*output.path, output.makes_folders))
+                throw std::runtime_error(named + ": " + *why);
             for (const fs::path& input : inputs)
                 if (same_file(*output.path, input))
                     throw std::runtime_error(named + " is the same file as the input '" + input.string() +

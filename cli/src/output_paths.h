@@ -13,11 +13,13 @@ namespace rast::cli {
 struct OutputPath {
     std::string option;               // as the user typed it, e.g. "--ids-out"
     std::optional<std::string> path;  // absent: not asked for
+    bool makes_folders = false;       // its missing folders are made when it is written
 };
 
 // Throws std::runtime_error naming the option and the path unless every output asked for can be written:
-// the path is not empty and names a regular file or nothing yet, its folder exists and may be written in,
-// and it is neither the same file as one of `inputs` nor as another output (the error then names both).
+// the path is not empty and names a regular file or nothing yet, its folder exists (or, if it makes_folders,
+// the nearest one that does is a folder) and may be written in, and it is neither the same file as one of
+// `inputs` nor as another output (the error then names both).
 void check_output_paths(const std::vector<std::filesystem::path>& inputs, const std::vector<OutputPath>& outputs);
 
 }  // namespace rast::cli

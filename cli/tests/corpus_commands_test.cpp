@@ -1,6 +1,10 @@
 // rast replay, check and diff end to end: files in, exit status, lines out, files untouched or written.
 #include "cli_harness.h"
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <iostream>
 #include <string>
 #include <utility>
 
@@ -176,12 +180,17 @@ TEST_F(CorpusCommands, DiffAndCheckRefuseOptionsTheirSceneOrEngineWouldIgnore) {
 }
 
 // Refused before the work, so that a fold is never reported and then lost: a corpus folder that cannot be
-// one, a negative count of samples to show, and --threads, which check's coverage count would ignore.
+// one (or be made, under a file), a negative count of samples to show, and --threads, which check's coverage
+// count would ignore.
 TEST_F(CorpusCommands, CheckRefusesABadCorpusFolderANegativeCountAndThreads) {
     const std::string scene = file("fold.tri", kFold);
     const std::string not_a_folder = file("note.txt", "kept\n");
+    const std::string under_a_file = "its parent '" + not_a_folder + "' is not a folder";
     for (const auto& [args, message] :
-         {std::pair{" --corpus-out " + not_a_folder, "--corpus-out: '" + not_a_folder + "' exists and is not a folder"},
+         {std::pair{" --corpus-out " + not_a_folder,
+                    "rast: error: --corpus-out '" + not_a_folder + "/check-fold-reference.tri': " + under_a_file},
+          std::pair{" --corpus-out " + not_a_folder + "/sub",
+                    "rast: error: --corpus-out '" + not_a_folder + "/sub/check-fold-reference.tri': " + under_a_file},
           std::pair{std::string(" --corpus-out ''"), std::string("--corpus-out: the path is empty")},
           std::pair{" --show -1 --corpus-out " + (dir / "found").string(), std::string("--show: a count cannot be negative, got -1")},
           std::pair{" --engine fast --threads 2 --corpus-out " + (dir / "found").string(),
@@ -193,6 +202,31 @@ TEST_F(CorpusCommands, CheckRefusesABadCorpusFolderANegativeCountAndThreads) {
     }
     EXPECT_EQ(slurp(not_a_folder), "kept\n");
     EXPECT_FALSE(fs::exists(dir / "found"));
+}
+
+// Run in a child process, which drops root (root may write anywhere) to the user nobody; its output goes to
+// stderr for the test to match. Exit code 0: refused, before the work, for the folder it may not write in.
+void check_into_read_only_folder(const std::string& scene, const std::string& corpus, const std::string& folder) {
+    if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
+    const Result r = rast("check " + scene + " --corpus-out " + corpus);
+    std::cerr << r.out;
+    const bool refused = r.status == 1 && contains(r.out, "rast: error: --corpus-out '" + corpus +
+                                                              "/check-fold-reference.tri': cannot write in its folder '" +
+                                                              folder + "': Permission denied\n");
+    std::_Exit(refused && !contains(r.out, "violating") ? 0 : 2);
+}
+
+// The fold was found and printed, and only then did writing its case fail.
+TEST_F(CorpusCommands, CheckRefusesACorpusFolderItMayNotWriteInBeforeTheWork) {
+    const std::string scene = file("fold.tri", kFold);
+    const fs::path folder = dir / "read-only";
+    fs::create_directories(folder);
+    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    EXPECT_EXIT(check_into_read_only_folder(scene, folder.string(), folder.string()), ::testing::ExitedWithCode(0), "");
+    EXPECT_EXIT(check_into_read_only_folder(scene, (folder / "sub").string(), folder.string()),
+                ::testing::ExitedWithCode(0), "");
+    EXPECT_TRUE(fs::is_empty(folder));
 }
 
 TEST_F(CorpusCommands, DiffFindsNothingOnASnappedSceneWithFixed8) {
