@@ -67,8 +67,8 @@ bool read_as_float(const PlyElement& e, std::string_view property) {
                kFloatVertexProperties.end();
 }
 
-// The vertex colors OpenMesh reads: from text, one of an integer type as an int, so that a larger value
-// fails the stream and shifts every value after it.
+// The vertex colors OpenMesh reads: one of an integer type as an int (from text, a larger value fails the
+// stream and shifts every value after it), a float as float, a double not at all.
 constexpr std::array<std::string_view, 7> kColorProperties{"red",         "green",         "blue",        "alpha",
                                                            "diffuse_red", "diffuse_green", "diffuse_blue"};
 
@@ -178,6 +178,10 @@ void add_property(const HeaderLines& h, PlyHeader& header) {
         if (std::find(kCountTypes.begin(), kCountTypes.end(), h[2]) == kCountTypes.end())
             h.fail("list count type " + quote_token(h[2]) + ": OpenMesh reads uchar, uint8, uint16 or int");
         if (!p.type->integer) h.fail("vertex indices of type " + quote_token(h[3]) + ": they must be integers");
+        // OpenMesh drops the face properties before the list, then reads their values as the list's.
+        if (!e.properties.empty())
+            h.fail("face property " + quote_token(e.properties.front().name) + " before '" + p.name +
+                   "': OpenMesh skips it and misreads every face; put the list first");
     } else if (h.size() == 3) {
         p = {h[2], &type_named(h, h[1]), nullptr};
         // OpenMesh takes either word for the type, so a name that is a type name can swap them.
@@ -185,6 +189,10 @@ void add_property(const HeaderLines& h, PlyHeader& header) {
         if (header.format != PlyFormat::ascii && read_as_float(e, p.name) && p.type->integer)
             h.fail("vertex property '" + p.name + "' of type " + quote_token(h[1]) +
                    ": OpenMesh reads it from binary data only as float or double");
+        // A double color is read as nothing from binary data and as an int from text, shifting what follows.
+        if (is_color(e, p.name) && !p.type->integer && p.type->size == 8)
+            h.fail("vertex color '" + p.name + "' of type " + quote_token(h[1]) +
+                   ": OpenMesh reads a color only as float or as an integer type");
     } else {
         h.fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
     }

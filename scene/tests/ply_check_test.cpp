@@ -143,6 +143,31 @@ TEST_F(PlyFiles, RejectsPropertiesOpenMeshMisreads) {
               "a.ply:8: expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
 }
 
+// OpenMesh reads a double color from binary data as nothing (printing to stderr) and from text as an int; it
+// drops the face properties declared before the vertex list and reads their values as the list's: the ASCII
+// face "3 3 0 1 2" (flags 3, then the triangle 0 1 2) became the triangle 3 0 1, silently.
+TEST_F(PlyFiles, RejectsADoubleColorAndAFacePropertyBeforeTheVertexList) {
+    const std::string vertex = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
+    for (const std::string& format : {kAscii, kLittle})
+        for (const char* type : {"double", "float64"})
+            EXPECT_EQ(error_of("a.ply", format + vertex + "property " + type + " green\n"),
+                      "a.ply:7: vertex color 'green' of type '" + std::string(type) +
+                          "': OpenMesh reads a color only as float or as an integer type");
+    const std::string flags_first = vertex + "element face 1\nproperty uchar flags\nproperty list uchar int vertex_indices\n";
+    const std::string reason = "a.ply:9: face property 'flags' before 'vertex_indices': OpenMesh skips it and misreads "
+                               "every face; put the list first";
+    EXPECT_EQ(error_of("a.ply", kAscii + flags_first + "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 3 0 1 2\n"), reason);
+    EXPECT_EQ(error_of("a.ply", kLittle + flags_first + "end_header\n"), reason);
+    // After the list, a face property is read past.
+    const Mesh m = read_mesh(write("b.ply", kAscii + vertex +
+                                                "property uchar red\nproperty float blue\nelement face 1\n"
+                                                "property list uchar int vertex_indices\nproperty uchar flags\n"
+                                                "end_header\n0 0 0 1 0.5\n1 0 0 2 0.5\n0 1 0 3 0.5\n0 0 1 4 0.5\n"
+                                                "3 0 1 2 3\n"));
+    ASSERT_EQ(m.faces.size(), 1u);
+    EXPECT_EQ(m.faces[0], (std::array<std::uint32_t, 3>{0, 1, 2}));
+}
+
 // In ASCII, OpenMesh reads values as text, so integer coordinates are fine there.
 TEST_F(PlyFiles, AsciiIntegerCoordinatesRead) {
     const Mesh m = read_mesh(write("a.ply", kAscii +
