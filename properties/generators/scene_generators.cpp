@@ -14,6 +14,16 @@ namespace rast::gen {
 
 namespace {
 
+// RapidCheck scales the span of inRange and the bits of an arbitrary integer with the test's size, which
+// it spreads from 0 to max_size over the cases: below size 90 or so a uniform double came out as lo plus a
+// sliver, a coordinate as the viewport's lower margin (most scenes covered nothing) and a shuffle as one
+// fixed order. The public generators draw at the nominal size whatever the test's: their scenes are
+// bounded anyway, and shrinking, not size, makes a counterexample small.
+template <class T>
+rc::Gen<T> at_full_size(rc::Gen<T> g) {
+    return rc::gen::resize(rc::kNominalSize, std::move(g));
+}
+
 // k * 2^-bits with k drawn so that the value lies in [lo, hi].
 rc::Gen<double> on_grid(double lo, double hi, int bits) {
     const auto k0 = static_cast<std::int64_t>(std::ceil(std::ldexp(lo, bits)));
@@ -209,18 +219,18 @@ rc::Gen<std::vector<Triangle>> region(Viewport vp, int samples, int bits) {
 }
 
 rc::Gen<Scene> region_scene(rc::Gen<int> grid) {
-    return rc::gen::exec([grid] {
+    return at_full_size(rc::gen::exec([grid] {
         const int bits = *grid;
         const Viewport vp = *viewport();
         const int samples = *sample_count();
         return Scene{vp, samples, *detail::shuffled(*region(vp, samples, bits))};
-    });
+    }));
 }
 
 }  // namespace
 
 rc::Gen<double> coordinate(double lo, double hi) {
-    return rc::gen::exec([lo, hi] {
+    return at_full_size(rc::gen::exec([lo, hi] {
         switch (*rc::gen::inRange(0, 5)) {
             case 0: return *on_grid(lo, hi, 0);
             case 1: return *on_grid(std::floor(lo), std::floor(hi) - 1, 0) + 0.5;
@@ -228,7 +238,7 @@ rc::Gen<double> coordinate(double lo, double hi) {
             case 3: return ulps_off(*on_grid(lo, hi, *grid_bits()), *rc::gen::inRange(-3, 4));
             default: return *arbitrary(lo, hi);
         }
-    });
+    }));
 }
 
 rc::Gen<double> depth() {
@@ -236,13 +246,14 @@ rc::Gen<double> depth() {
 }
 
 rc::Gen<Viewport> viewport() {
-    return rc::gen::exec([] { return Viewport{*rc::gen::inRange(1, 25), *rc::gen::inRange(1, 25)}; });
+    return at_full_size(
+        rc::gen::exec([] { return Viewport{*rc::gen::inRange(1, 25), *rc::gen::inRange(1, 25)}; }));
 }
 
 rc::Gen<int> sample_count() { return rc::gen::weightedElement<int>({{3, 1}, {1, 4}, {1, 8}, {1, 16}}); }
 
 rc::Gen<Triangle> triangle(Viewport vp) {
-    return rc::gen::exec([vp] {
+    return at_full_size(rc::gen::exec([vp] {
         switch (*rc::gen::weightedElement<int>({{4, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}, {1, 5}})) {
             case 0: return ordinary(vp);
             case 1: return needle(vp);
@@ -251,18 +262,18 @@ rc::Gen<Triangle> triangle(Viewport vp) {
             case 4: return reaching_far(vp);
             default: return touching_subnormals(vp);
         }
-    });
+    }));
 }
 
 rc::Gen<Scene> loose_triangles() {
-    return rc::gen::exec([] {
+    return at_full_size(rc::gen::exec([] {
         const Viewport vp = *viewport();
         return scene_of(vp, *rc::gen::container<std::vector<Triangle>>(*rc::gen::inRange(1, 7), triangle(vp)));
-    });
+    }));
 }
 
 rc::Gen<Scene> long_rows() {
-    return rc::gen::exec([] {
+    return at_full_size(rc::gen::exec([] {
         const Viewport vp{*rc::gen::inRange(64, 257), *rc::gen::inRange(1, 5)};
         std::vector<Triangle> triangles;
         for (int k = *rc::gen::inRange(1, 4); k > 0; --k) {
@@ -284,7 +295,7 @@ rc::Gen<Scene> long_rows() {
             triangles.push_back(t);
         }
         return Scene{vp, *sample_count(), std::move(triangles)};
-    });
+    }));
 }
 
 // Vertices on a pixel, centre or subpixel grid, or arbitrary doubles (bits < 0).
@@ -293,7 +304,7 @@ rc::Gen<Scene> triangulated_region() { return region_scene(rc::gen::element(-1, 
 rc::Gen<Scene> triangulated_region_on_grid(int bits) { return region_scene(rc::gen::just(bits)); }
 
 rc::Gen<Scene> overlapping_triangles() {
-    return rc::gen::exec([] {
+    return at_full_size(rc::gen::exec([] {
         const Viewport vp = *viewport();
         // Depth on a plane z = a x + b y + c with dyadic coefficients: exact at grid vertices, so
         // triangles on one plane tie exactly wherever they overlap.
@@ -317,7 +328,7 @@ rc::Gen<Scene> overlapping_triangles() {
             triangles.push_back(t);
         }
         return scene_of(vp, std::move(triangles));
-    });
+    }));
 }
 
 rc::Gen<Scene> any_scene() {

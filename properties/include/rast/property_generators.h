@@ -4,7 +4,8 @@
 // (closed fans around a sample, strips, grids, triangulations of point sets and polygons, the front of a
 // closed mesh under a random camera); overlapping and interpenetrating triangles with equal and unequal
 // depths. Every scene is valid input: finite coordinates, a viewport of 1..24 pixels a side (long_rows:
-// up to 256).
+// up to 256). The generators below draw the same distribution whatever RapidCheck's size (they resize
+// to its nominal size): a counterexample is made small by shrinking.
 #pragma once
 
 #include <rast/scene.h>
