@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <exception>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -145,13 +144,7 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
     for (const Property* p : selected) {
         for (const Engine& engine : engines) {
             if (!p->applies_to(engine)) continue;
-            Outcome outcome;
-            try {
-                outcome = p->check(doc.scene, engine);
-            } catch (const std::exception& e) {
-                // The scene was accepted by the reader: an engine that throws on it has failed.
-                outcome = Outcome::fail(engine.name + " threw: " + e.what());
-            }
+            Outcome outcome = p->verdict_on(doc.scene, engine);
             if (outcome.verdict == Outcome::Verdict::not_applicable) {
                 ++not_applicable;
                 if (why_not.empty()) why_not = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;

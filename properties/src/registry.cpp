@@ -32,6 +32,14 @@ constexpr Property kProperties[] = {
 
 }  // namespace
 
+Outcome Property::verdict_on(const Scene& scene, const Engine& engine) const {
+    try {
+        return check(scene, engine);
+    } catch (const std::exception& e) {
+        return Outcome::fail(engine.name + " threw: " + e.what());
+    }
+}
+
 std::span<const Property> all_properties() { return kProperties; }
 
 const Property& property(std::string_view name) {
@@ -50,7 +58,7 @@ std::vector<Failure> check_case(const Scene& scene, std::span<const std::string>
     for (const Property* p : selected)
         for (const Engine& engine : engines)
             if (p->applies_to(engine))
-                if (Outcome o = p->check(scene, engine); o.failed())
+                if (Outcome o = p->verdict_on(scene, engine); o.failed())
                     failures.push_back({std::string(p->name), engine.name, std::move(o.detail)});
     return failures;
 }

@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <ostream>
+#include <set>
+#include <stdexcept>
 
 #include "property_harness.h"
 
@@ -30,6 +32,7 @@ enum class Wrapper {
     none,
     culling_left_on,     // clockwise triangles dropped: back-face culling where none was asked for
     snap_by_truncation,  // vertices cut toward zero to 1/256 before the fixed8 path, not rounded
+    throws_on_overlap,   // an exception (as from a failed allocation or check) where two triangles overlap
 };
 
 struct Bite {
@@ -56,12 +59,23 @@ Triangle culled(const Triangle& t) {
     return {{t.v[0], t.v[0], t.v[0]}};  // zero area: covers nothing, keeps its id
 }
 
+// Whether some sample is covered by two triangles (by the reference's coverage).
+bool has_overlap(const Scene& s) {
+    std::set<std::size_t> seen;
+    for (const Triangle& t : s.triangles)
+        for (const std::size_t sample : rast::properties::reference_engine().covered_samples(t, s.viewport, s.samples))
+            if (!seen.insert(sample).second) return true;
+    return false;
+}
+
 Engine broken(const Bite& b) {
     Engine e = rast::properties::fast_engine(b.precision);
     const auto given = [w = b.wrapper](const Triangle& t) {
         return w == Wrapper::culling_left_on ? culled(t) : w == Wrapper::snap_by_truncation ? cut_toward_zero(t) : t;
     };
     e.render = [b, given](const Scene& s) {
+        if (b.wrapper == Wrapper::throws_on_overlap && has_overlap(s))
+            throw std::runtime_error("the engine gave up on overlapping triangles");
         Scene seen = s;
         for (Triangle& t : seen.triangles) t = given(t);
         return rast::fast::render_with_fault(seen, {b.precision, 1}, b.fault);
@@ -109,7 +123,7 @@ TEST_P(Bites, PropertyFailsAndKeepsItsCounterexample) {
     EXPECT_EQ(document.header.at(0), (std::pair<std::string, std::string>{"properties", b.property}));
     // Replayed on the broken engine, the kept scene still fails the property.
     const auto& p = rast::properties::property(b.property);
-    EXPECT_TRUE(p.check(document.scene, engine[0]).failed());
+    EXPECT_TRUE(p.verdict_on(document.scene, engine[0]).failed());
 }
 
 // For each fault, the properties that must notice it.
@@ -151,6 +165,8 @@ const Bite kBites[] = {
      "winding_invariance"},
     {"snap_by_truncation_translation_invariance", Fault::none, Wrapper::snap_by_truncation, Precision::fixed8,
      "translation_invariance"},
+    {"throws_on_overlap_order_independence", Fault::none, Wrapper::throws_on_overlap, Precision::fixed8,
+     "order_independence"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Faults, Bites, ::testing::ValuesIn(kBites),

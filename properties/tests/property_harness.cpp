@@ -32,7 +32,8 @@ void hold(std::string_view name, const Scene& scene, std::span<const properties:
     bool checked = false;
     for (const properties::Engine& engine : engines) {
         if (!p.applies_to(engine)) continue;
-        const properties::Outcome outcome = p.check(scene, engine);
+        // An engine that throws is a failure whose scene is kept too.
+        const properties::Outcome outcome = p.verdict_on(scene, engine);
         if (outcome.failed()) {
             const auto kept = keep_counterexample(name, engine.name, scene, outcome.detail);
             RC_FAIL(std::string(name) + " fails on " + engine.name + ": " + outcome.detail + " (kept in " +

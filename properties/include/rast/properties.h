@@ -67,6 +67,10 @@ struct Property {
     std::string_view statement;  // one sentence
     bool (*applies_to)(const Engine&);
     Outcome (*check)(const Scene&, const Engine&);
+
+    // check, where an engine that throws on the scene (valid input) fails the property instead of ending
+    // the run: what the property tests keep and replay reports, like any other failure.
+    Outcome verdict_on(const Scene& scene, const Engine& engine) const;
 };
 
 // Every property, in a fixed order: watertight, tie_rule, winding_invariance, translation_invariance,
