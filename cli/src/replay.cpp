@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -45,9 +46,9 @@ std::string read_text(const fs::path& file) {
     return text.str();
 }
 
-// The line of the first "# key:" comment, so that a bad header value is reported where it is written;
-// 1 when the key is missing, since the header belongs at the top.
-std::int64_t header_line(const std::string& text, std::string_view key) {
+// The line of the first "# key:" comment anywhere in the file, so that a bad header value is reported
+// where it is written.
+std::optional<std::int64_t> key_line(const std::string& text, std::string_view key) {
     std::istringstream lines(text);
     std::string line;
     for (std::int64_t number = 1; std::getline(lines, line); ++number) {
@@ -61,8 +62,11 @@ std::int64_t header_line(const std::string& text, std::string_view key) {
         skip_blanks();
         if (rest.starts_with(key) && rest.substr(key.size()).starts_with(':')) return number;
     }
-    return 1;
+    return std::nullopt;
 }
+
+// 1 when the key is missing: the header belongs at the top.
+std::int64_t header_line(const std::string& text, std::string_view key) { return key_line(text, key).value_or(1); }
 
 // The properties the header names, each once, all known.
 std::vector<const Property*> named_properties(const TriDocument& doc, const std::string& text) {
@@ -73,7 +77,13 @@ std::vector<const Property*> named_properties(const TriDocument& doc, const std:
         return values;
     }();
     const std::int64_t line = header_line(text, "properties");
-    if (keys.empty()) throw CaseError{line, "no '# properties:' header naming the properties that apply"};
+    if (keys.empty()) {
+        // The header is the comments before the first statement (corpus/README.md); a key after it is a
+        // plain comment.
+        if (key_line(text, "properties"))
+            throw CaseError{line, "the '# properties:' header must come before the first statement"};
+        throw CaseError{line, "no '# properties:' header naming the properties that apply"};
+    }
     if (keys.size() > 1) throw CaseError{line, "more than one '# properties:' header; name them all on one line"};
 
     std::vector<const Property*> selected;
@@ -138,23 +148,36 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
         return {CaseReport::Status::error, std::string("ERROR ") + e.what(), {}};
     }
 
+    if (doc.scene.triangles.empty()) return error_report(file, {0, "has no triangle: it tests nothing"});
+
     std::vector<Failure> failures;
     std::size_t checks = 0, not_applicable = 0;
     std::string why_not;
+    std::string unchecked;  // the first named property that every engine it applies to found not applicable
     for (const Property* p : selected) {
+        bool applies = false, checked = false;
+        std::string why_not_here;
         for (const Engine& engine : engines) {
             if (!p->applies_to(engine)) continue;
+            applies = true;
             Outcome outcome = p->verdict_on(doc.scene, engine);
             if (outcome.verdict == Outcome::Verdict::not_applicable) {
                 ++not_applicable;
-                if (why_not.empty()) why_not = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
+                if (why_not_here.empty()) why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
                 continue;
             }
             ++checks;
+            checked = true;
             if (outcome.failed()) failures.push_back({std::string(p->name), engine.name, std::move(outcome.detail)});
         }
+        if (why_not.empty()) why_not = why_not_here;
+        if (applies && !checked && unchecked.empty()) unchecked = why_not_here;
     }
     if (!failures.empty()) return {CaseReport::Status::fail, fail_line(file, failures), std::move(failures)};
+    // A property named in the header holds for the case by construction (corpus/README.md): one that no
+    // engine can check here claims what the case does not test.
+    if (!unchecked.empty())
+        return error_report(file, {header_line(text, "properties"), "a named property checks nothing (" + unchecked + ")"});
     if (checks == 0)
         return error_report(file, {header_line(text, "properties"),
                                    "checks nothing: no named property applies to any engine" +

@@ -85,6 +85,7 @@ TEST_F(Replay, HeaderErrorsNameTheLine) {
     std::ofstream(dir / "unknown.tri") << "# why: a typo\n# properties: tie_rule watertigt\nviewport 2 2\n";
     std::ofstream(dir / "twice.tri") << "# properties: tie_rule tie_rule\nviewport 2 2\n";
     std::ofstream(dir / "none.tri") << "# why: forgot the properties\nviewport 2 2\n";
+    std::ofstream(dir / "late.tri") << "viewport 2 2\n# properties: tie_rule\ntri 0 0 0  2 0 0  0 2 0\n";
     const auto engines = rast::properties::all_engines();
 
     const CaseReport unknown = rast::cli::replay_case(dir / "unknown.tri", engines);
@@ -97,6 +98,24 @@ TEST_F(Replay, HeaderErrorsNameTheLine) {
     EXPECT_EQ(rast::cli::replay_case(dir / "none.tri", engines).line,
               "ERROR " + (dir / "none.tri").string() +
                   ":1: no '# properties:' header naming the properties that apply");
+    EXPECT_EQ(rast::cli::replay_case(dir / "late.tri", engines).line,
+              "ERROR " + (dir / "late.tri").string() +
+                  ":2: the '# properties:' header must come before the first statement");
+}
+
+// A case claims what its header names: a named property that no engine can check (translation by whole
+// pixels with a vertex at 2^60, where no shift is exact), or a scene without triangles, tests nothing.
+TEST_F(Replay, CasesThatTestNothingAreErrors) {
+    std::ofstream(dir / "unchecked.tri") << "# why: a vertex at 2^60\n# properties: tie_rule translation_invariance\n"
+                                            "viewport 8 8\ntri 0.5 0.5 0  7.5 0.5 0  0x1p+60 0x1.0000000000001p+60 0\n";
+    std::ofstream(dir / "empty.tri") << "# properties: tie_rule\nviewport 2 2\n";
+    const auto engines = rast::properties::all_engines();
+    EXPECT_EQ(rast::cli::replay_case(dir / "unchecked.tri", engines).line,
+              "ERROR " + (dir / "unchecked.tri").string() +
+                  ":2: a named property checks nothing (translation_invariance [reference]: no whole-pixel shift "
+                  "keeps every coordinate exact)");
+    EXPECT_EQ(rast::cli::replay_case(dir / "empty.tri", engines).line,
+              "ERROR " + (dir / "empty.tri").string() + ": has no triangle: it tests nothing");
 }
 
 TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
