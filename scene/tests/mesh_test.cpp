@@ -198,6 +198,11 @@ TEST_F(MeshFiles, RejectsMalformedPlyWithLine) {
               "a.ply:5: unknown PLY header keyword 'what'");
 }
 
+// An ASCII PLY header of 3 vertices (x, y, z, nx; x a double) and 1 face: data starts on line 11.
+const std::string kPlyHeader = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty float y\n"
+                               "property float z\nproperty float nx\nelement face 1\n"
+                               "property list uchar int vertex_indices\nend_header\n";
+
 // OpenMesh reads coordinates as float and drops a vertex whose coordinate overflows, so every later index
 // shifts and it blamed a face: "Face contains invalid vertex index" (OBJ), "Face has equal vertices" (OFF).
 // A vertex that no face uses counts too, as it shifts the others all the same.
@@ -210,11 +215,8 @@ TEST_F(MeshFiles, RejectsCoordinatesBeyondFloatRangeWithLine) {
               "a.off:7: number '1e39'" + reason);
     EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0 3.5e38 0\n"),
               "a.stl:5: number '3.5e38'" + reason);
-    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty float y\n"
-                            "property float z\nproperty float nx\nelement face 1\n"
-                            "property list uchar int vertex_indices\nend_header\n";
-    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 0\n1e39 0 0 0\n"), "a.ply:12: number '1e39'" + reason);
-    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 -1e39\n"), "a.ply:11: number '-1e39'" + reason);
+    EXPECT_EQ(error_of("a.ply", kPlyHeader + "0 0 0 0\n1e39 0 0 0\n"), "a.ply:12: number '1e39'" + reason);
+    EXPECT_EQ(error_of("a.ply", kPlyHeader + "0 0 0 -1e39\n"), "a.ply:11: number '-1e39'" + reason);
 }
 
 // 3.4028235e38 is below FLT_MAX + half an ulp, so it rounds to FLT_MAX and reads. Values OpenMesh does not keep
@@ -241,14 +243,11 @@ TEST_F(MeshFiles, RejectsHexFloatsWithLine) {
     EXPECT_EQ(error_of("a.obj", "v 0 0 0 -0X1P0\n"), "a.obj:1: hex float '-0X1P0'" + reason);
     EXPECT_EQ(error_of("a.off", "OFF\n3 1 0\n0 0 0\n1 0 0x1.8p1\n"), "a.off:4: hex float '0x1.8p1'" + reason);
     const std::string facet = "solid s\nfacet normal 0 0 1\nouter loop\n";
-    EXPECT_EQ(error_of("a.stl", facet + "vertex 0 0 0\nvertex +0x1p-2 5 6\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n"),
+    EXPECT_EQ(error_of("a.stl", facet + "vertex 1 0 0\nvertex +0x1p-2 5 6\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n"),
               "a.stl:5: hex float '+0x1p-2'" + reason);
     EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0x0p0 0 1\n"), "a.stl:2: hex float '0x0p0'" + reason);
-    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                            "property float z\nproperty double quality\nelement face 1\n"
-                            "property list uchar int vertex_indices\nend_header\n";
-    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 0\n0x1p-2 0 0 0\n"), "a.ply:12: hex float '0x1p-2'" + reason);
-    EXPECT_EQ(error_of("a.ply", ply + "0 0 0 0x10\n"), "a.ply:11: hex float '0x10'" + reason);
+    EXPECT_EQ(error_of("a.ply", kPlyHeader + "0 0 0 0\n0x1p-2 0 0 0\n"), "a.ply:12: hex float '0x1p-2'" + reason);
+    EXPECT_EQ(error_of("a.ply", kPlyHeader + "0 0 0 0x10\n"), "a.ply:11: hex float '0x10'" + reason);
 }
 
 // The decimal spellings that strtod and C++ streams both read, read as strtof reads them (once rounded, where
