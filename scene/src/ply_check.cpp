@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -67,14 +69,18 @@ bool read_as_float(const PlyElement& e, std::string_view property) {
                kFloatVertexProperties.end();
 }
 
-// The vertex colors OpenMesh reads: one of an integer type as an int (from text, a larger value fails the
-// stream and shifts every value after it), a float as float, a double not at all.
+// The colors OpenMesh reads, of vertices (all seven names) and of faces (the first four): one of an integer
+// type as an int (from text, a larger value fails the stream and shifts every value after it), a float as
+// float, a double not at all.
 constexpr std::array<std::string_view, 7> kColorProperties{"red",         "green",         "blue",        "alpha",
                                                            "diffuse_red", "diffuse_green", "diffuse_blue"};
+constexpr std::size_t kFaceColorProperties = 4;
 
 bool is_color(const PlyElement& e, std::string_view property) {
-    return e.name == "vertex" &&
-           std::find(kColorProperties.begin(), kColorProperties.end(), property) != kColorProperties.end();
+    const auto names = e.name == "vertex" ? std::span(kColorProperties)
+                       : e.name == "face" ? std::span(kColorProperties).first(kFaceColorProperties)
+                                          : std::span<const std::string_view>();
+    return std::find(names.begin(), names.end(), property) != names.end();
 }
 
 enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
@@ -191,7 +197,7 @@ void add_property(const HeaderLines& h, PlyHeader& header) {
                    ": OpenMesh reads it from binary data only as float or double");
         // A double color is read as nothing from binary data and as an int from text, shifting what follows.
         if (is_color(e, p.name) && !p.type->integer && p.type->size == 8)
-            h.fail("vertex color '" + p.name + "' of type " + quote_token(h[1]) +
+            h.fail(e.name + " color '" + p.name + "' of type " + quote_token(h[1]) +
                    ": OpenMesh reads a color only as float or as an integer type");
     } else {
         h.fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");

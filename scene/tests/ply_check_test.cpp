@@ -149,10 +149,17 @@ TEST_F(PlyFiles, RejectsPropertiesOpenMeshMisreads) {
 TEST_F(PlyFiles, RejectsADoubleColorAndAFacePropertyBeforeTheVertexList) {
     const std::string vertex = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
     for (const std::string& format : {kAscii, kLittle})
-        for (const char* type : {"double", "float64"})
+        for (const char* type : {"double", "float64"}) {
             EXPECT_EQ(error_of("a.ply", format + vertex + "property " + type + " green\n"),
                       "a.ply:7: vertex color 'green' of type '" + std::string(type) +
                           "': OpenMesh reads a color only as float or as an integer type");
+            // Faces have colors too (red, green, blue, alpha): a double one made the next face a copy of
+            // the first one's corners.
+            EXPECT_EQ(error_of("a.ply", format + vertex + "element face 2\nproperty list uchar int vertex_indices\n" +
+                                            "property " + type + " alpha\n"),
+                      "a.ply:9: face color 'alpha' of type '" + std::string(type) +
+                          "': OpenMesh reads a color only as float or as an integer type");
+        }
     const std::string flags_first = vertex + "element face 1\nproperty uchar flags\nproperty list uchar int vertex_indices\n";
     const std::string reason = "a.ply:9: face property 'flags' before 'vertex_indices': OpenMesh skips it and misreads "
                                "every face; put the list first";
@@ -234,6 +241,13 @@ TEST_F(PlyFiles, RejectsAsciiValuesTheirTypeDoesNotHold) {
         {ply("1 0 0 0 0 0", "3 0 1 2.5"),
          "a.ply:16: item of list 'vertex_indices' of type 'int': expected an integer, got '2.5'"}};
     for (const auto& [file, message] : bad) EXPECT_EQ(error_of("a.ply", file), message);
+    // A face's color as well: 3000000000 failed OpenMesh's stream, and the next face became a copy of this
+    // one's corners.
+    EXPECT_EQ(error_of("a.ply", kAscii + "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                                         "element face 1\nproperty list uchar int vertex_indices\nproperty uint red\n"
+                                         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 3000000000\n"),
+              "a.ply:14: property 'red' of type 'uint': 3000000000 is out of range (0 to 2147483647: OpenMesh "
+              "reads colors as int)");
 }
 
 TEST_F(PlyFiles, RejectsACountThatDoesNotFitTheFile) {
