@@ -25,6 +25,14 @@ MeshFileCheck check_obj(TokenLines& in) {
             for (std::size_t k = 1; k < 4; ++k) float_coordinate(in, k);
             for (std::size_t k = 4; k < in.size(); ++k) in.number(k);
             ++vertices;
+        } else if (in[0] == "vt" || in[0] == "vn") {
+            // Texture coordinates and normals are read as floats too: OpenMesh gives up on the whole file
+            // at a 'vt' it cannot read, without a line.
+            const std::size_t least = in[0] == "vt" ? 2 : 3;
+            if (in.size() < least + 1)
+                in.fail("'" + in[0] + "' expects at least " + std::to_string(least) + " numbers, got " +
+                        values(in.size() - 1));
+            for (std::size_t k = 1; k < in.size(); ++k) float_coordinate(in, k);
         } else if (in[0] == "f") {
             if (in.size() < 4) in.fail("'f' expects at least 3 vertices, got " + values(in.size() - 1));
             // OBJ counts from 1; a negative index counts back from the last vertex so far.

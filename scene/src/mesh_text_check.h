@@ -22,7 +22,7 @@ struct MeshFileCheck {
 
 // For OBJ, OFF, ASCII PLY and ASCII STL (extension lower case, without the dot): throws ParseError with
 // file and line for a malformed or non-finite number, a hex float (see TokenLines::number), a vertex
-// coordinate beyond float's range (see float_coordinate), a wrong count of values, a face index out of range
+// coordinate, OBJ texture coordinate or normal beyond float's range (see float_coordinate), a wrong count of values, a face index out of range
 // or repeated within a face, or a file that ends early. For PLY, ASCII or binary, see ply_check.h. For binary STL: a non-finite coordinate
 // (OpenMesh merges STL corners by position, and NaN would merge with anything). Binary OFF is refused.
 MeshFileCheck check_mesh_file(const std::filesystem::path& path, const std::string& extension);

@@ -248,6 +248,19 @@ TEST_F(MeshFiles, RejectsHexFloatsWithLine) {
     EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0x0p0 0 1\n"), "a.stl:2: hex float '0x0p0'" + reason);
     EXPECT_EQ(error_of("a.ply", kPlyHeader + "0 0 0 0\n0x1p-2 0 0 0\n"), "a.ply:12: hex float '0x1p-2'" + reason);
     EXPECT_EQ(error_of("a.ply", kPlyHeader + "0 0 0 0x10\n"), "a.ply:11: hex float '0x10'" + reason);
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nvt 0x1p-1 0\n"), "a.obj:2: hex float '0x1p-1'" + reason);
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nvn 0 0 0x1p0\n"), "a.obj:2: hex float '0x1p0'" + reason);
+}
+
+// OBJ texture coordinates and normals are floats to OpenMesh as well: a 'vt' it could not read ended the
+// whole file without a line, and a normal beyond float range was kept as infinity.
+TEST_F(MeshFiles, ChecksObjTextureCoordinatesAndNormalsWithLine) {
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nvt 0.5\n"), "a.obj:2: 'vt' expects at least 2 numbers, got 1 value");
+    EXPECT_EQ(error_of("a.obj", "v 0 0 0\nvn 0 1\n"), "a.obj:2: 'vn' expects at least 3 numbers, got 2 values");
+    EXPECT_EQ(error_of("a.obj", "vt 1e39 0\n"), "a.obj:1: number '1e39' exceeds float range: meshes are read as float");
+    EXPECT_EQ(error_of("a.obj", "vn 0 0 -1e39\n"), "a.obj:1: number '-1e39' exceeds float range: meshes are read as float");
+    const Mesh m = read_mesh(write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n"));
+    EXPECT_EQ(m.faces.size(), 1u);
 }
 
 // The decimal spellings that strtod and C++ streams both read, read as strtof reads them (once rounded, where
