@@ -37,6 +37,7 @@ struct CheckOptions {
     EngineChoice engine;
     SceneInput input;
     std::string corpus_out = "corpus/found";
+    bool corpus_out_given = false;  // --corpus-out on the command line
     std::size_t show = 20;
 };
 
@@ -217,7 +218,9 @@ fs::path keep_case(const CheckOptions& o, const Scene& scene, const Coverage& co
 }
 
 bool run_check(const CheckOptions& o) {
-    check_output_paths({o.input.path}, {{"--corpus-out", case_file(o).string(), true}});
+    // A folder the user named is checked before the work. The default is not: most checks find nothing
+    // to write, and they run in a folder the user may not write in as well.
+    if (o.corpus_out_given) check_output_paths({o.input.path}, {{"--corpus-out", case_file(o).string(), true}});
     const bool mesh = o.input.is_mesh();
     const Scene scene = o.input.load();
     std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, "
@@ -265,9 +268,9 @@ void add_check_command(CLI::App& app, int& status) {
     add_engine_options(*cmd, o->engine);
     // Coverage is counted triangle by triangle, on one thread: the option would be ignored.
     cmd->remove_option(cmd->get_option("--threads"));
-    // The folder is made only when a violation is found; the case's path is checked before the work (an
-    // empty folder would put it in the working folder).
-    cmd->add_option("--corpus-out", o->corpus_out, "Folder for the corpus case a violation is written to")
+    // The folder is made only when a violation is found (an empty folder would put it in the working folder).
+    CLI::Option* corpus_out =
+        cmd->add_option("--corpus-out", o->corpus_out, "Folder for the corpus case a violation is written to")
         ->check([](const std::string& folder) -> std::string { return folder.empty() ? "the path is empty" : ""; })
         ->capture_default_str();
     cmd->add_option("--show", o->show, "How many violating samples to print")
@@ -275,7 +278,8 @@ void add_check_command(CLI::App& app, int& status) {
             return count.find('-') == std::string::npos ? "" : "a count cannot be negative, got " + count;
         })
         ->capture_default_str();
-    cmd->callback([o, &status] {
+    cmd->callback([o, corpus_out, &status] {
+        o->corpus_out_given = corpus_out->count() > 0;
         if (!run_check(*o)) status = 1;
     });
 }

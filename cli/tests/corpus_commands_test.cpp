@@ -216,7 +216,8 @@ void check_into_read_only_folder(const std::string& scene, const std::string& co
     std::_Exit(refused && !contains(r.out, "violating") ? 0 : 2);
 }
 
-// The fold was found and printed, and only then did writing its case fail.
+// The folder --corpus-out names is refused before the work: the fold used to be found and printed, and
+// only then did writing its case fail.
 TEST_F(CorpusCommands, CheckRefusesACorpusFolderItMayNotWriteInBeforeTheWork) {
     const std::string scene = file("fold.tri", kFold);
     const fs::path folder = dir / "read-only";
@@ -227,6 +228,23 @@ TEST_F(CorpusCommands, CheckRefusesACorpusFolderItMayNotWriteInBeforeTheWork) {
     EXPECT_EXIT(check_into_read_only_folder(scene, (folder / "sub").string(), folder.string()),
                 ::testing::ExitedWithCode(0), "");
     EXPECT_TRUE(fs::is_empty(folder));
+}
+
+// The default corpus folder is not: a check that finds nothing runs in a folder the user may not write in.
+void clean_check_in_read_only_folder(const std::string& scene, const fs::path& folder) {
+    if ((::geteuid() == 0 && ::setuid(65534) != 0) || ::chdir(folder.c_str()) != 0) std::_Exit(3);
+    const Result r = rast("check " + scene);
+    std::cerr << r.out;
+    std::_Exit(r.status == 0 && contains(r.out, "0 violating samples\n") ? 0 : 2);
+}
+
+TEST_F(CorpusCommands, CheckRunsInAFolderItMayNotWriteInWhenItFindsNothing) {
+    const std::string scene = file("square.tri", kGoodCase);
+    const fs::path folder = dir / "read-only";
+    fs::create_directories(folder);
+    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    EXPECT_EXIT(clean_check_in_read_only_folder(scene, folder), ::testing::ExitedWithCode(0), "");
 }
 
 TEST_F(CorpusCommands, DiffFindsNothingOnASnappedSceneWithFixed8) {
