@@ -116,6 +116,10 @@ TEST_F(Replay, CasesThatTestNothingAreErrors) {
                   "keeps every coordinate exact)");
     EXPECT_EQ(rast::cli::replay_case(dir / "empty.tri", engines).line,
               "ERROR " + (dir / "empty.tri").string() + ": has no triangle: it tests nothing");
+    // Replayed on the reference alone, a float mode's property applies to no engine.
+    std::ofstream(dir / "float.tri") << "# properties: float_within_bound\nviewport 2 2\ntri 0 0 0  2 0 0  0 2 0\n";
+    EXPECT_EQ(rast::cli::replay_case(dir / "float.tri", std::vector{rast::properties::reference_engine()}).line,
+              "ERROR " + (dir / "float.tri").string() + ":1: checks nothing: no named property applies to any engine");
 }
 
 TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
