@@ -204,6 +204,15 @@ TEST_F(CorpusCommands, CheckRefusesABadCorpusFolderANegativeCountAndThreads) {
     EXPECT_FALSE(fs::exists(dir / "found"));
 }
 
+// A folder everyone may read and enter, and no one but root write in.
+fs::path read_only_folder(const fs::path& dir) {
+    const fs::path folder = dir / "read-only";
+    fs::create_directories(folder);
+    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    return folder;
+}
+
 // Run in a child process, which drops root (root may write anywhere) to the user nobody; its output goes to
 // stderr for the test to match. Exit code 0: refused, before the work, for the folder it may not write in.
 void check_into_read_only_folder(const std::string& scene, const std::string& corpus, const std::string& folder) {
@@ -220,10 +229,7 @@ void check_into_read_only_folder(const std::string& scene, const std::string& co
 // only then did writing its case fail.
 TEST_F(CorpusCommands, CheckRefusesACorpusFolderItMayNotWriteInBeforeTheWork) {
     const std::string scene = file("fold.tri", kFold);
-    const fs::path folder = dir / "read-only";
-    fs::create_directories(folder);
-    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                                fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    const fs::path folder = read_only_folder(dir);
     EXPECT_EXIT(check_into_read_only_folder(scene, folder.string(), folder.string()), ::testing::ExitedWithCode(0), "");
     EXPECT_EXIT(check_into_read_only_folder(scene, (folder / "sub").string(), folder.string()),
                 ::testing::ExitedWithCode(0), "");
@@ -240,10 +246,7 @@ void clean_check_in_read_only_folder(const std::string& scene, const fs::path& f
 
 TEST_F(CorpusCommands, CheckRunsInAFolderItMayNotWriteInWhenItFindsNothing) {
     const std::string scene = file("square.tri", kGoodCase);
-    const fs::path folder = dir / "read-only";
-    fs::create_directories(folder);
-    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                                fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    const fs::path folder = read_only_folder(dir);
     EXPECT_EXIT(clean_check_in_read_only_folder(scene, folder), ::testing::ExitedWithCode(0), "");
 }
 
