@@ -5,11 +5,13 @@
 #include <rast/llvmpipe.h>
 
 #include <sys/socket.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -102,7 +104,8 @@ void close_all_but(int keep) {
 
 }  // namespace
 
-LlvmpipeChild::LlvmpipeChild(const Scene& scene, int threads) : viewport_(scene.viewport) {
+LlvmpipeChild::LlvmpipeChild(const Scene& scene, int threads, int reply_seconds)
+    : viewport_(scene.viewport), reply_seconds_(reply_seconds) {
     int fds[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
         fail(std::string("socketpair: ") + std::strerror(errno));
@@ -119,9 +122,13 @@ LlvmpipeChild::LlvmpipeChild(const Scene& scene, int threads) : viewport_(scene.
     }
     close(fds[1]);
     socket_ = fds[0];
+    const timeval limit{reply_seconds, 0};
+    if (setsockopt(socket_, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof limit) != 0)
+        fail(std::string("setsockopt: ") + std::strerror(errno));
     char reply = 0;
-    if (read_up_to(socket_, &reply, 1) != 1 || reply != kReady)
-        fail(reply == kError ? read_to_end(socket_) : "the child process died");
+    receive(&reply, 1);
+    if (reply == kError) fail(read_to_end(socket_));
+    if (reply != kReady) fail("unexpected reply from the child process");
 }
 
 LlvmpipeChild::~LlvmpipeChild() { end(); }
@@ -138,6 +145,8 @@ void LlvmpipeChild::end() {
 }
 
 void LlvmpipeChild::fail(const std::string& what) {
+    // A child that failed may be stuck, and one that reported an error exits anyway.
+    if (pid_ > 0) kill(pid_, SIGKILL);
     end();
     throw std::runtime_error("llvmpipe timing: " + what);
 }
@@ -147,9 +156,18 @@ void LlvmpipeChild::ask(char request, char expected, char* to, std::size_t size)
     // MSG_NOSIGNAL: a child that died must not take the parent with it (SIGPIPE).
     if (send(socket_, &request, 1, MSG_NOSIGNAL) != 1) fail("the child process died");
     char reply = 0;
-    if (read_up_to(socket_, &reply, 1) != 1) fail("the child process died");
+    receive(&reply, 1);
     if (reply == kError) fail(read_to_end(socket_));
-    if (reply != expected || read_up_to(socket_, to, size) != size) fail("truncated reply from the child process");
+    if (reply != expected) fail("unexpected reply from the child process");
+    receive(to, size);
+}
+
+void LlvmpipeChild::receive(char* to, std::size_t size) {
+    errno = 0;
+    if (read_up_to(socket_, to, size) == size) return;
+    if (errno == EAGAIN || errno == EWOULDBLOCK)
+        fail("no reply from the child process in " + std::to_string(reply_seconds_) + " s");
+    fail("the child process died");
 }
 
 double LlvmpipeChild::draw() {

@@ -19,7 +19,10 @@ namespace rast::bench {
 // when it fails; the destructor ends the child.
 class LlvmpipeChild {
 public:
-    LlvmpipeChild(const Scene& scene, int threads);
+    // A child that sends no reply for `reply_seconds` (one that deadlocked: it is forked from a process
+    // with threads and starts Mesa's) is killed, and the call throws, rather than hang the bench.
+    static constexpr int kReplySeconds = 120;
+    LlvmpipeChild(const Scene& scene, int threads, int reply_seconds = kReplySeconds);
     ~LlvmpipeChild();
     LlvmpipeChild(const LlvmpipeChild&) = delete;
     LlvmpipeChild& operator=(const LlvmpipeChild&) = delete;
@@ -31,12 +34,17 @@ public:
     // What the last draw left, read back (rast::peer::Llvmpipe::read_ids).
     Framebuffer result();
 
+    pid_t pid() const { return pid_; }  // the child's, for tests that stop it
+
 private:
     // Sends `request` and reads the reply `expected`, with `size` bytes after it, into `to`.
     void ask(char request, char expected, char* to, std::size_t size);
+    // `size` bytes of a reply, else fails: the child died, or sent nothing for reply_seconds.
+    void receive(char* to, std::size_t size);
     [[noreturn]] void fail(const std::string& what);  // ends the child, then throws
     void end();
     Viewport viewport_;
+    int reply_seconds_;
     pid_t pid_ = -1;
     int socket_ = -1;
 };

@@ -7,6 +7,8 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <csignal>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -62,6 +64,21 @@ TEST(LlvmpipeChild, ThrowsTheChildsMessage) {
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("1 sample per pixel"), std::string::npos) << e.what();
     }
+}
+
+TEST(LlvmpipeChild, AChildThatStopsReplyingIsKilled) {
+    LlvmpipeChild llvmpipe(on_grid_scene(), 1, 1);
+    const pid_t child = llvmpipe.pid();
+    ASSERT_EQ(kill(child, SIGSTOP), 0);  // as a child deadlocked in a draw would
+    try {
+        llvmpipe.draw();
+        FAIL() << "expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_EQ(std::string(e.what()), "llvmpipe timing: no reply from the child process in 1 s");
+    }
+    // Killed and waited for: the process is gone.
+    EXPECT_EQ(kill(child, 0), -1);
+    EXPECT_EQ(errno, ESRCH);
 }
 
 TEST(TimeLlvmpipeDraws, OneTimePerIteration) {
