@@ -6,8 +6,10 @@
 //   fixed4 / fixed8 / fixed16: vertices snapped to a 1/2^N pixel grid (round to nearest, ties to even),
 //     then exact integer edge functions: bit-identical to the reference on already snapped vertices.
 //   float32 / float64: edge functions in floating point, within edge_error_bound() of the exact edge.
-//     Where that bound is +infinity (an evaluation can overflow: coordinates near +-DBL_MAX), the
-//     coverage is whatever the IEEE evaluation gives: such a triangle can lose samples, or all of them.
+//     Where that bound is +infinity (an evaluation can overflow: the edge function's products of
+//     coordinates, from about 2^63 pixels in float32 and 2^511 in float64), the coverage is whatever the
+//     IEEE evaluation gives: such a triangle can lose samples, or all of them (a float32 triangle with
+//     corners at +-2^64 covering the whole viewport draws nothing).
 //
 // Fixed-point range. A triangle whose snapped coordinates and the viewport's extent are all within
 // 2^(29-N) pixels of the origin (fixed8: 2^21) takes the fast path: 64-bit integer edge functions,
