@@ -27,7 +27,8 @@ std::optional<std::string> unwritable(const fs::path& path, bool makes_folders) 
     if (fs::is_directory(status)) return "is a folder";
     // The file is replaced by renaming a new one over it: that would replace a device or a pipe, not write to it.
     if (fs::exists(status) && !fs::is_regular_file(status)) return "exists and is not a regular file";
-    fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    const fs::path own = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    fs::path folder = own;
     // The missing folders would be made in the nearest one that exists.
     if (makes_folders)
         while (!fs::exists(folder) && folder != ".") folder = folder.has_parent_path() ? folder.parent_path() : ".";
@@ -35,8 +36,8 @@ std::optional<std::string> unwritable(const fs::path& path, bool makes_folders) 
     if (!fs::is_directory(folder)) return "its parent '" + folder.string() + "' is not a folder";
     // The new file is made in the folder and renamed into place, which needs write and search permission.
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
-        return "cannot write in its folder '" + folder.string() + "': " +
-               std::error_code(errno, std::generic_category()).message();
+        return (folder == own ? "cannot write in its folder '" : "cannot make its folder in '") + folder.string() +
+               "': " + std::error_code(errno, std::generic_category()).message();
     return std::nullopt;
 }
 

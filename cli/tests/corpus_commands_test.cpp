@@ -215,13 +215,13 @@ fs::path read_only_folder(const fs::path& dir) {
 
 // Run in a child process, which drops root (root may write anywhere) to the user nobody; its output goes to
 // stderr for the test to match. Exit code 0: refused, before the work, for the folder it may not write in.
-void check_into_read_only_folder(const std::string& scene, const std::string& corpus, const std::string& folder) {
+void check_into_read_only_folder(const std::string& scene, const std::string& corpus, const std::string& why) {
     if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
     const Result r = rast("check " + scene + " --corpus-out " + corpus);
     std::cerr << r.out;
     const bool refused = r.status == 1 && contains(r.out, "rast: error: --corpus-out '" + corpus +
-                                                              "/check-fold-reference.tri': cannot write in its folder '" +
-                                                              folder + "': Permission denied\n");
+                                                              "/check-fold-reference.tri': " + why +
+                                                              ": Permission denied\n");
     std::_Exit(refused && !contains(r.out, "violating") ? 0 : 2);
 }
 
@@ -230,8 +230,12 @@ void check_into_read_only_folder(const std::string& scene, const std::string& co
 TEST_F(CorpusCommands, CheckRefusesACorpusFolderItMayNotWriteInBeforeTheWork) {
     const std::string scene = file("fold.tri", kFold);
     const fs::path folder = read_only_folder(dir);
-    EXPECT_EXIT(check_into_read_only_folder(scene, folder.string(), folder.string()), ::testing::ExitedWithCode(0), "");
-    EXPECT_EXIT(check_into_read_only_folder(scene, (folder / "sub").string(), folder.string()),
+    EXPECT_EXIT(
+        check_into_read_only_folder(scene, folder.string(), "cannot write in its folder '" + folder.string() + "'"),
+        ::testing::ExitedWithCode(0), "");
+    // A folder to make, in one that may not be written in.
+    EXPECT_EXIT(check_into_read_only_folder(scene, (folder / "sub").string(),
+                                            "cannot make its folder in '" + folder.string() + "'"),
                 ::testing::ExitedWithCode(0), "");
     EXPECT_TRUE(fs::is_empty(folder));
 }
