@@ -604,11 +604,7 @@ template <Fault F>
 void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, Workspace& ws) {
     validate(scene.viewport, scene.samples);
     validate(options.precision);
-    // TBB's arena does not survive a count in the tens of thousands.
-    constexpr int kMaxThreads = 1024;
-    if (options.threads < 0 || options.threads > kMaxThreads)
-        throw std::invalid_argument("rast::fast: thread count " + std::to_string(options.threads) +
-                                    " is not 0..1024");
+    validate_threads(options.threads);
     if (scene.triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
         throw std::invalid_argument("rast::fast: more triangles than 32-bit ids can name");
 

@@ -221,12 +221,7 @@ inline Plane make_plane_narrow(const Placed& s, const Context& c) {
 template <Fault F>
 std::optional<Placed> place(const Triangle& t, const Context& c) {
     Placed s;
-    s.v = t.v;
-    if (c.bits != 0)
-        for (Vertex& p : s.v) {
-            p.x = snap_coordinate(p.x, c.bits);
-            p.y = snap_coordinate(p.y, c.bits);
-        }
+    s.v = snapped(t, c.precision).v;
     const int orient = orientation(s.v);
     if (orient == 0) return std::nullopt;  // zero area covers nothing
     if (orient < 0) std::swap(s.v[1], s.v[2]);

@@ -47,6 +47,13 @@ inline void validate(Precision p) {
                                     " is not one of the enum's values");
 }
 
+// TBB's arena does not survive a count in the tens of thousands.
+inline void validate_threads(int threads) {
+    constexpr int kMaxThreads = 1024;
+    if (threads < 0 || threads > kMaxThreads)
+        throw std::invalid_argument("rast::fast: thread count " + std::to_string(threads) + " is not 0..1024");
+}
+
 inline void validate_sample(double x, double y) {
     if (!std::isfinite(x) || !std::isfinite(y))
         throw std::invalid_argument("rast::fast: sample coordinate is not a finite number");
