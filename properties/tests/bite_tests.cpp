@@ -61,9 +61,10 @@ Triangle culled(const Triangle& t) {
 
 // Whether some sample is covered by two triangles (by the reference's coverage).
 bool has_overlap(const Scene& s) {
+    const Engine reference = rast::properties::reference_engine();
     std::set<std::size_t> seen;
     for (const Triangle& t : s.triangles)
-        for (const std::size_t sample : rast::properties::reference_engine().covered_samples(t, s.viewport, s.samples))
+        for (const std::size_t sample : reference.covered_samples(t, s.viewport, s.samples))
             if (!seen.insert(sample).second) return true;
     return false;
 }
