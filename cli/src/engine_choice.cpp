@@ -43,7 +43,9 @@ void add_engine_options(CLI::App& command, EngineChoice& choice) {
         })
         ->check(for_fast_only)
         ->capture_default_str();
-    command.add_option("--threads", choice.threads, "Fast path threads (0: all cores; at most the cores); the result is the same")
+    command
+        .add_option("--threads", choice.threads,
+                    "Fast path threads (0: all cores; at most the cores); the result is the same")
         ->check(CLI::Range(0, 1024))
         ->check(for_fast_only)
         ->capture_default_str();

@@ -162,7 +162,8 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
             Outcome outcome = p->verdict_on(doc.scene, engine);
             if (outcome.verdict == Outcome::Verdict::not_applicable) {
                 ++not_applicable;
-                if (why_not_here.empty()) why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
+                if (why_not_here.empty())
+                    why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
                 continue;
             }
             ++checks;
@@ -175,10 +176,12 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
     // A property named in the header holds for the case by construction (corpus/README.md): one that no
     // engine can check here claims what the case does not test.
     if (!unchecked.empty())
-        return error_report(file, {header_line(text, "properties"), "a named property checks nothing (" + unchecked + ")"});
+        return error_report(file,
+                            {header_line(text, "properties"), "a named property checks nothing (" + unchecked + ")"});
     // Left: no named property applies to any of the engines replayed.
     if (checks == 0)
-        return error_report(file, {header_line(text, "properties"), "checks nothing: no named property applies to any engine"});
+        return error_report(file,
+                            {header_line(text, "properties"), "checks nothing: no named property applies to any engine"});
     return {CaseReport::Status::pass, pass_line(file, selected.size(), engines.size(), checks, not_applicable), {}};
 }
 

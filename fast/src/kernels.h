@@ -1,9 +1,10 @@
 // The inner loops over a block of samples (up to 64 x 64 pixels, one sample index), in SIMD with runtime
 // dispatch (Highway): coverage by edge functions and the z-buffer test, one call per triangle and tile
 // (integer edges find each row's run of covered samples first, then depth-test the run, or a narrow
-// block's whole rows masked by it; the other kinds are fused with the test). Bit k of a row mask stands for the sample of pixel i0 + k. Every lane
-// computes exactly what the scalar definition in the comments computes (integers, or the same IEEE
-// operations without contraction), so the result does not depend on the instruction set.
+// block's whole rows masked by it; the other kinds are fused with the test). Bit k of a row mask stands
+// for the sample of pixel i0 + k. Every lane computes exactly what the scalar definition in the comments
+// computes (integers, or the same IEEE operations without contraction), so the result does not depend on
+// the instruction set.
 #pragma once
 
 #include <cstddef>

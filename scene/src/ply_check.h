@@ -16,7 +16,7 @@ namespace rast::detail {
 // The header must be what OpenMesh reads as written: 'ply', then 'format ascii|binary_little_endian|
 // binary_big_endian 1.0', then lines of 'comment', 'obj_info', 'element NAME COUNT' (each name once, the
 // face after the vertex), 'property TYPE NAME' (a known type; x, y, z, nx, ny, nz, u, v, s, t of a binary
-// vertex as float or double; a vertex color, red, green, blue, alpha or diffuse_*, not as double) and
+// vertex as float or double; a color, red, green, blue, alpha or a vertex's diffuse_*, not as double) and
 // 'property list COUNT_TYPE TYPE vertex_indices' of the face (the one list OpenMesh reads, before any other
 // face property; counts as uchar, uint8, uint16 or int, integer indices), then 'end_header'; no control
 // characters but tabs and the "\r" of "\r\n"; a vertex with x, y and z. Binary data must start where
