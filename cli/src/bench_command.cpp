@@ -74,7 +74,7 @@ void run(const BenchOptions& o) {
     if (o.json_out) files.emplace_back(*o.json_out, bench::format_json(report));
     if (o.plot_out) files.emplace_back(*o.plot_out, bench::format_svg(report));
     if (o.markdown_out) files.emplace_back(*o.markdown_out, markdown(report, o));
-    for (const auto& [path, bytes] : files) write_file_atomic(path, bytes);
+    write_files_atomic(std::vector<FileContent>(files.begin(), files.end()));
 }
 
 }  // namespace

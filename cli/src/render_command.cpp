@@ -117,10 +117,8 @@ void run_render(const RenderOptions& o) {
         if (o.depth_out) files.emplace_back(*o.depth_out, format_depth(at_centres));
     }
     if (o.coverage_out) files.emplace_back(*o.coverage_out, format_area(scene.viewport, area));
-    for (const auto& [path, bytes] : files) {
-        write_file_atomic(path, bytes);
-        std::cout << "wrote " << path << '\n';
-    }
+    write_files_atomic(std::vector<FileContent>(files.begin(), files.end()));
+    for (const auto& file : files) std::cout << "wrote " << file.first << '\n';
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace rast {
 
@@ -26,8 +27,13 @@ namespace {
 class Temporary {
 public:
     Temporary(std::string path, int fd) : path_(std::move(path)), fd_(fd) {}
+    Temporary(Temporary&& other) noexcept : path_(std::move(other.path_)), fd_(other.fd_) {
+        other.path_.clear();
+        other.fd_ = -1;
+    }
     Temporary(const Temporary&) = delete;
     Temporary& operator=(const Temporary&) = delete;
+    Temporary& operator=(Temporary&&) = delete;
     ~Temporary() {
         if (fd_ >= 0) ::close(fd_);
         if (!path_.empty()) ::unlink(path_.c_str());
@@ -58,9 +64,12 @@ std::filesystem::path directory_of(const std::filesystem::path& target) {
 Temporary create_temporary(const std::filesystem::path& target) {
     static std::atomic<unsigned long> counter{0};
     const std::filesystem::path dir = directory_of(target);
-    // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+    // The target's name cut short: a name near the 255 bytes most file systems allow is a legal target,
+    // and its temporary, longer by the pid, counter and suffix, must be legal too. Built by appending:
+    // GCC 12 warns falsely (-Wrestrict) on "." + std::string.
+    constexpr std::size_t kNameKept = 200;
     std::string stem = ".";
-    stem += target.filename().string();
+    stem += target.filename().string().substr(0, kNameKept);
     stem += '.';
     stem += std::to_string(::getpid());
     stem += '.';
@@ -76,9 +85,8 @@ Temporary create_temporary(const std::filesystem::path& target) {
     cannot_write(EEXIST, target, "no free temporary file name in '" + dir.string() + "'");
 }
 
-}  // namespace
-
-void write_file_atomic(const std::filesystem::path& target, std::string_view bytes) {
+// The temporary of `target` with all of `bytes` written, flushed and closed: ready to be renamed.
+Temporary staged(const std::filesystem::path& target, std::string_view bytes) {
     if (target.filename().empty()) cannot_write(EISDIR, target, "the path does not name a file");
     Temporary temp = create_temporary(target);
     const char* data = bytes.data();
@@ -94,18 +102,49 @@ void write_file_atomic(const std::filesystem::path& target, std::string_view byt
     }
     if (::fsync(temp.fd()) != 0) cannot_write(errno, target, "cannot fsync the temporary file '" + temp.path() + "'");
     if (temp.close() != 0) cannot_write(errno, target, "cannot close the temporary file '" + temp.path() + "'");
-    if (::rename(temp.path().c_str(), target.c_str()) != 0)
-        cannot_write(errno, target, "cannot rename the temporary file '" + temp.path() + "' over it");
-    temp.committed();
+    return temp;
+}
 
-    // The rename is durable only once the directory entry is.
+// The rename of `target` is durable only once its directory entry is.
+void sync_directory_of(const std::filesystem::path& target) {
     const std::filesystem::path dir = directory_of(target);
     const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     const int error = dir_fd < 0 ? errno : (::fsync(dir_fd) != 0 ? errno : 0);
     if (dir_fd >= 0) ::close(dir_fd);
-    if (error != 0)
-        fail(error, "'" + target.string() + "' was replaced, but fsync of its directory '" + dir.string() +
-                        "' failed, so the change might not survive a crash");
+    if (error == 0) return;
+    std::string what = "'";  // appended, as the temporary's name is, for GCC 12's -Wrestrict
+    what += target.string();
+    what += "' was replaced, but fsync of its directory '" + dir.string() +
+            "' failed, so the change might not survive a crash";
+    fail(error, what);
+}
+
+}  // namespace
+
+void write_files_atomic(std::span<const FileContent> files) {
+    std::vector<Temporary> temps;
+    temps.reserve(files.size());
+    for (const auto& [target, bytes] : files) temps.push_back(staged(target, bytes));
+    std::string replaced;  // the targets renamed into place so far, for the error of a later rename
+    for (std::size_t k = 0; k < files.size(); ++k) {
+        const std::filesystem::path& target = files[k].first;
+        if (::rename(temps[k].path().c_str(), target.c_str()) != 0) {
+            const int error = errno;
+            const std::string step = "cannot rename the temporary file '" + temps[k].path() + "' over it";
+            if (replaced.empty()) cannot_write(error, target, step);
+            fail(error, "cannot write '" + target.string() + "': " + step + "; already replaced: " + replaced);
+        }
+        temps[k].committed();
+        replaced += replaced.empty() ? "'" : ", '";
+        replaced += target.string();
+        replaced += '\'';
+    }
+    for (const auto& file : files) sync_directory_of(file.first);
+}
+
+void write_file_atomic(const std::filesystem::path& target, std::string_view bytes) {
+    const FileContent file{target, bytes};
+    write_files_atomic({&file, 1});
 }
 
 }  // namespace rast

@@ -139,5 +139,35 @@ TEST_F(AtomicFile, FailedWriteLeavesTargetUntouched) {
     EXPECT_EQ(slurp(target), "old");
 }
 
+TEST_F(AtomicFile, NameAsLongAsTheFileSystemAllowsIsWritten) {
+    const fs::path target = dir_ / std::string(255, 'n');
+    write_file_atomic(target, "long");
+    EXPECT_EQ(slurp(target), "long");
+    EXPECT_EQ(entries(), 1u);
+}
+
+TEST_F(AtomicFile, SeveralFilesAreAllWritten) {
+    const FileContent files[] = {{dir_ / "a.txt", "first"}, {dir_ / "b.txt", "second"}};
+    write_files_atomic(files);
+    EXPECT_EQ(slurp(dir_ / "a.txt"), "first");
+    EXPECT_EQ(slurp(dir_ / "b.txt"), "second");
+    EXPECT_EQ(entries(), 2u);
+}
+
+// The second file cannot be made: the first, written before it in the list, must not be replaced either.
+TEST_F(AtomicFile, OneFileThatCannotBeWrittenLeavesEveryTargetUntouched) {
+    write_file_atomic(dir_ / "a.txt", "old");
+    const FileContent files[] = {{dir_ / "a.txt", "new"}, {dir_ / "absent" / "b.txt", "new"}};
+    try {
+        write_files_atomic(files);
+        FAIL() << "no error";
+    } catch (const std::system_error& e) {
+        EXPECT_EQ(e.code(), std::errc::no_such_file_or_directory);
+        EXPECT_NE(std::string(e.what()).find((dir_ / "absent" / "b.txt").string()), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(slurp(dir_ / "a.txt"), "old");
+    EXPECT_EQ(entries(), 1u);
+}
+
 }  // namespace
 }  // namespace rast

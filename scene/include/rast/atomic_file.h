@@ -2,7 +2,9 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string_view>
+#include <utility>
 
 namespace rast {
 
@@ -13,5 +15,14 @@ namespace rast {
 // place but might not survive a crash, and the error says so. The new file gets the permissions of a newly
 // created file (0666 minus the umask).
 void write_file_atomic(const std::filesystem::path& target, std::string_view bytes);
+
+// A file to write: where, and its bytes.
+using FileContent = std::pair<std::filesystem::path, std::string_view>;
+
+// write_file_atomic for several files at once, all or nothing: every file's temporary is written, flushed
+// and fsynced before any of them is renamed into place, so that a failure while writing one (a full disk, a
+// name too long, a folder not writable) leaves every target as it was. A rename that fails after others
+// succeeded cannot be undone; the error then names the targets already replaced.
+void write_files_atomic(std::span<const FileContent> files);
 
 }  // namespace rast
