@@ -11,11 +11,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Two existing paths are the same file when they reach the same inode (through hard or symbolic links); a
-// path not yet there is the same as another when both resolve to one name. Made absolute first:
-// weakly_canonical leaves a bare relative name that does not exist as it is ("x" against "./x").
+// Two existing paths are the same file when they reach the same inode (through hard or symbolic links), and
+// an existing path is never the same file as one not yet there (an input piped in as /dev/stdin resolves
+// to no name at all); two paths not yet there are the same when both resolve to one name. Made absolute
+// first: weakly_canonical leaves a bare relative name that does not exist as it is ("x" against "./x").
 bool same_file(const fs::path& a, const fs::path& b) {
-    if (fs::exists(a) && fs::exists(b)) return fs::equivalent(a, b);
+    const bool a_exists = fs::exists(a);
+    if (a_exists != fs::exists(b)) return false;
+    if (a_exists) return fs::equivalent(a, b);
     return fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
 }
 

@@ -1,6 +1,7 @@
 #include "scene_input.h"
 
 #include <rast/mesh.h>
+#include <rast/scene_limits.h>
 #include <rast/tri_format.h>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 
 namespace rast::cli {
 namespace {
@@ -77,7 +80,14 @@ std::vector<CLI::Option*> mesh_view_options(CLI::App& command) {
 bool SceneInput::is_mesh() const { return is_mesh_path(path); }
 
 Scene SceneInput::with_samples(Scene scene) const {
-    if (samples) scene.samples = *samples;
+    if (!samples) return scene;
+    // The scene was checked with its own count; a larger one can take it past the size limit.
+    try {
+        check_scene_size(scene.viewport, *samples);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("--samples " + std::to_string(*samples) + ": " + e.what());
+    }
+    scene.samples = *samples;
     return scene;
 }
 

@@ -29,7 +29,8 @@ struct SceneInput {
     // Reads a .tri scene, or a mesh projected into the viewport by the (framed or given) camera, and
     // applies the samples override.
     Scene load() const;
-    // The samples override applied to a scene from elsewhere.
+    // The samples override applied to a scene from elsewhere; throws std::invalid_argument when the scene
+    // would then be above the size limit (scene_limits.h).
     Scene with_samples(Scene scene) const;
     bool is_mesh() const;
 };

@@ -21,14 +21,24 @@ struct Result {
     bool crashed() const { return status < 0; }
 };
 
-inline Result rast(const std::string& args) {
-    FILE* pipe = popen((std::string(RAST_BINARY) + " " + args + " 2>&1").c_str(), "r");
+// Runs a shell command line.
+inline Result run(const std::string& command) {
+    FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) throw std::runtime_error("popen failed");
     std::string out;
     char buffer[4096];
     while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
     const int raw = pclose(pipe);
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+inline Result rast(const std::string& args) { return run(std::string(RAST_BINARY) + " " + args + " 2>&1"); }
+
+// rast with `text` piped into its standard input, as `cat scene.tri | rast ...` does. The text is quoted
+// for the shell as it is: it must not hold a single quote.
+inline Result rast_piped(const std::string& text, const std::string& args) {
+    if (text.find('\'') != std::string::npos) throw std::invalid_argument("rast_piped: a single quote in the text");
+    return run("printf '%s' '" + text + "' | " + RAST_BINARY + " " + args + " 2>&1");
 }
 
 inline std::string slurp(const std::filesystem::path& file) {

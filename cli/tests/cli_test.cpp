@@ -13,6 +13,7 @@ namespace {
 using rast::cli::testing::contains;
 using rast::cli::testing::Result;
 using rast::cli::testing::rast;
+using rast::cli::testing::rast_piped;
 
 class Cli : public rast::cli::testing::TempDirTest {};
 
@@ -189,6 +190,33 @@ TEST_F(Cli, ABadOutputPathLeavesTheOtherOutputsUntouched) {
         EXPECT_FALSE(std::filesystem::exists(dir / "new.txt")) << path;
     }
     EXPECT_TRUE(std::filesystem::is_empty(dir / "folder"));
+}
+
+// A scene piped in as /dev/stdin is a pipe with no name: the outputs are still checked against it, and
+// written.
+TEST_F(Cli, APipedSceneCanHaveOutputs) {
+    const Result r = rast_piped(kCorner, "render /dev/stdin --ids-out " + out("ids.txt"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(read("ids.txt"), kCornerIds);
+}
+
+// The scene's own sample count was within the size limit; the override's is not.
+TEST_F(Cli, ASampleCountAboveTheSizeLimitIsRefused) {
+    const Result r = rast("render " + file("big.tri", "viewport 16384 16384\ntri 0 0 0 1 0 0 0 1 0\n") +
+                          " --samples 16 --ids-out " + out("ids.txt"));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_TRUE(contains(r.out, "rast: error: --samples 16: viewport 16384x16384 with 16 samples per pixel has "
+                                "4294967296 samples, above the limit 268435456\n"))
+        << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "ids.txt"));
+}
+
+// A name as long as the file system allows is a legal output: its temporary, named after it, must be too.
+TEST_F(Cli, AnOutputWithTheLongestNameIsWritten) {
+    const std::string name(255, 'n');
+    const Result r = rast("render " + file("corner.tri", kCorner) + " --ids-out " + out(name));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(read(name), kCornerIds);
 }
 
 // Writing is a rename over the path: it would replace a pipe or a device, not write into it.
