@@ -96,34 +96,64 @@ MeshFileCheck check_off(TokenLines& in) {
         *result.triangles += static_cast<std::size_t>(n) - 2;
         text += joined(in);
     }
+    // OpenMesh reads as many faces as the header declares: a line more would be dropped unseen.
+    if (in.next()) in.fail("a line after the last face the header declares");
     return result;
 }
 
+// Each facet is 'facet normal NX NY NZ', 'outer loop', three 'vertex X Y Z', 'endloop', 'endfacet', in that
+// order; a facet cut short (a file that ends inside one) is an error, not a triangle fewer.
 void check_ascii_stl(TokenLines& in) {
     in.expect("'solid'");
     if (in[0] != "solid") in.fail("expected 'solid' (and the size does not fit a binary STL)");
-    int loop_vertices = -1;  // -1 outside an 'outer loop'
+    enum class At { between_facets, facet, loop, loop_ended };
+    At at = At::between_facets;
+    const auto next_keyword = [&at] {
+        switch (at) {
+            case At::between_facets: return "'facet' or 'endsolid'";
+            case At::facet: return "'outer loop'";
+            case At::loop: return "'vertex' or 'endloop'";
+            case At::loop_ended: return "'endfacet'";
+        }
+        return "";
+    };
+    // The keyword on this line may come only `where`.
+    const auto allowed = [&](At where) {
+        if (at != where) in.fail("expected " + std::string(next_keyword()) + ", got " + quote_token(in[0]));
+    };
+    int loop_vertices = 0;
     while (in.next()) {
         const std::string& keyword = in[0];
         if (keyword == "facet") {
+            allowed(At::between_facets);
             if (in.size() != 5 || in[1] != "normal") in.fail("expected 'facet normal NX NY NZ'");
             for (std::size_t k = 2; k < 5; ++k) in.number(k);
+            at = At::facet;
         } else if (keyword == "outer") {
+            allowed(At::facet);
             if (in.size() != 2 || in[1] != "loop") in.fail("expected 'outer loop'");
             loop_vertices = 0;
+            at = At::loop;
         } else if (keyword == "vertex") {
+            allowed(At::loop);
             if (in.size() != 4) in.fail("'vertex' expects 3 numbers (x y z), got " + values(in.size() - 1));
-            if (loop_vertices < 0) in.fail("'vertex' outside 'outer loop'");
             for (std::size_t k = 1; k < 4; ++k) float_coordinate(in, k);
             ++loop_vertices;
         } else if (keyword == "endloop") {
+            allowed(At::loop);
             if (loop_vertices != 3)
                 in.fail("a facet has " + std::to_string(loop_vertices) + " vertices; STL facets are triangles");
-            loop_vertices = -1;
-        } else if (keyword != "endfacet" && keyword != "endsolid" && keyword != "solid") {
+            at = At::loop_ended;
+        } else if (keyword == "endfacet") {
+            allowed(At::loop_ended);
+            at = At::between_facets;
+        } else if (keyword == "endsolid" || keyword == "solid") {
+            allowed(At::between_facets);
+        } else {
             in.fail("unknown STL keyword " + quote_token(keyword));
         }
     }
+    if (at != At::between_facets) in.fail("the file ends inside a facet, before " + std::string(next_keyword()));
 }
 
 // A binary STL is an 80-byte header, a 32-bit little-endian triangle count and 50 bytes per triangle

@@ -358,6 +358,8 @@ MeshFileCheck check_ascii_data(TokenLines& in, const PlyHeader& header) {
                 in.fail("too many values for element '" + e.name + "': " + values(in.size()) + ", expected " +
                         std::to_string(at));
         }
+    // OpenMesh stops reading where the header's counts end: a line more would be dropped unseen.
+    if (in.next()) in.fail("a line after the last element the header declares");
     return result;
 }
 

@@ -315,5 +315,29 @@ TEST_F(MeshFiles, RejectsMalformedAsciiStlWithLine) {
     EXPECT_EQ(error_of("a.stl", "not an stl at all\n"), "a.stl:1: expected 'solid' (and the size does not fit a binary STL)");
 }
 
+// A facet cut short, or its keywords out of order, is an error: it was read as one triangle fewer.
+TEST_F(MeshFiles, RejectsAnAsciiStlFacetCutShort) {
+    const std::string loop = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
+    EXPECT_EQ(error_of("a.stl", loop), "a.stl:6: the file ends inside a facet, before 'vertex' or 'endloop'");
+    EXPECT_EQ(error_of("a.stl", loop + "endloop\n"), "a.stl:7: the file ends inside a facet, before 'endfacet'");
+    EXPECT_EQ(error_of("a.stl", loop + "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"),
+              "a.stl:11: the file ends inside a facet, before 'vertex' or 'endloop'");
+    EXPECT_EQ(error_of("a.stl", loop + "endloop\nfacet normal 0 0 1\n"), "a.stl:8: expected 'endfacet', got 'facet'");
+    EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nvertex 0 0 0\n"),
+              "a.stl:3: expected 'outer loop', got 'vertex'");
+    EXPECT_EQ(error_of("a.stl", "solid s\nvertex 0 0 0\n"), "a.stl:2: expected 'facet' or 'endsolid', got 'vertex'");
+}
+
+// OpenMesh reads as many faces as an OFF or ASCII PLY header declares: one more line was dropped unseen.
+TEST_F(MeshFiles, RejectsLinesAfterTheDeclaredFaces) {
+    const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+    EXPECT_EQ(error_of("a.off", "OFF\n3 1 0\n" + vertices + "3 0 1 2\n3 0 2 1\n"),
+              "a.off:7: a line after the last face the header declares");
+    EXPECT_EQ(error_of("a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                "end_header\n" + vertices + "3 0 1 2\n3 0 2 1\n"),
+              "a.ply:14: a line after the last element the header declares");
+}
+
 }  // namespace
 }  // namespace rast
