@@ -117,6 +117,23 @@ std::string fail_line(const fs::path& file, const std::vector<Failure>& failures
 
 }  // namespace
 
+namespace {
+
+// Every .tri file below `folder` (following links to files, not to folders, as recursive_directory_iterator
+// does); a folder that cannot be listed is taken as itself, for replay_case to report.
+void collect_cases(const fs::path& folder, std::vector<fs::path>& found) {
+    std::error_code error;
+    fs::directory_iterator entries(folder, error);
+    for (; !error && entries != fs::directory_iterator(); entries.increment(error)) {
+        const fs::directory_entry& entry = *entries;
+        if (entry.is_directory(error) && !entry.is_symlink(error)) collect_cases(entry.path(), found);
+        else if (entry.is_regular_file(error) && entry.path().extension() == ".tri") found.push_back(entry.path());
+    }
+    if (error) found.push_back(folder);
+}
+
+}  // namespace
+
 std::vector<fs::path> corpus_files(std::span<const fs::path> paths) {
     std::vector<fs::path> files;
     for (const fs::path& path : paths) {
@@ -125,8 +142,7 @@ std::vector<fs::path> corpus_files(std::span<const fs::path> paths) {
             continue;
         }
         std::vector<fs::path> found;
-        for (const auto& entry : fs::recursive_directory_iterator(path))
-            if (entry.is_regular_file() && entry.path().extension() == ".tri") found.push_back(entry.path());
+        collect_cases(path, found);
         std::sort(found.begin(), found.end());
         files.insert(files.end(), found.begin(), found.end());
     }
@@ -137,6 +153,11 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
     std::string text;
     TriDocument doc;
     std::vector<const Property*> selected;
+    if (fs::is_directory(file)) {  // corpus_files gives a folder it could not list as itself
+        std::error_code error;
+        fs::directory_iterator(file, error);
+        return error_report(file, {0, "cannot list the folder" + (error ? ": " + error.message() : std::string())});
+    }
     try {
         text = read_text(file);
         std::istringstream in(text);

@@ -14,7 +14,8 @@
 namespace rast::cli {
 
 // The .tri files to replay: a file is taken as given; a folder contributes every .tri file below it,
-// in path order, so that a run's output is the same everywhere.
+// in path order, so that a run's output is the same everywhere. A folder below that cannot be listed is
+// taken as itself: replay_case reports it as an error, and the other cases still run.
 std::vector<std::filesystem::path> corpus_files(std::span<const std::filesystem::path> paths);
 
 struct CaseReport {

@@ -129,4 +129,27 @@ TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
     EXPECT_EQ(rast::cli::corpus_files(given), (std::vector<fs::path>{dir / "b/a.tri", dir / "b/z.tri", dir / "a.tri"}));
 }
 
+// In a child process that drops root (root may list any folder) to the user nobody: a folder it may not
+// list is among the cases, in path order, and replays as an error; exit code 0 means all of that held.
+void list_beside_a_locked_folder(const fs::path& dir) {
+    if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
+    const std::vector<fs::path> given{dir};
+    if (rast::cli::corpus_files(given) != std::vector<fs::path>{dir / "a.tri", dir / "locked", dir / "z.tri"})
+        std::_Exit(1);
+    const CaseReport report = rast::cli::replay_case(dir / "locked", rast::properties::all_engines());
+    const std::string expected = "ERROR " + (dir / "locked").string() + ": cannot list the folder: Permission denied";
+    const bool reported = report.status == CaseReport::Status::error && report.line == expected;
+    std::_Exit(reported ? 0 : 2);
+}
+
+TEST_F(Replay, AFolderThatCannotBeListedIsAnErrorAndTheOthersStillRun) {
+    for (const char* name : {"a.tri", "z.tri", "locked/hidden.tri"}) {
+        fs::create_directories((dir / name).parent_path());
+        std::ofstream(dir / name) << "\n";
+    }
+    fs::permissions(dir / "locked", fs::perms::none);
+    EXPECT_EXIT(list_beside_a_locked_folder(dir), ::testing::ExitedWithCode(0), "");
+    fs::permissions(dir / "locked", fs::perms::owner_all);
+}
+
 }  // namespace
