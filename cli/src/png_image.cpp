@@ -1,6 +1,7 @@
 #include "png_image.h"
 
 #include <png.h>
+#include <rast/scene_limits.h>
 
 #include <algorithm>
 #include <array>
@@ -67,6 +68,16 @@ Image side_by_side(const std::vector<Image>& panels, int scale) {
             std::copy(src, src + 3, px);
         }
     return out;
+}
+
+void check_picture_size(std::int64_t width, std::int64_t height) {
+    const std::string size = std::to_string(width) + "x" + std::to_string(height) + " pixels";
+    if (width > PNG_USER_WIDTH_MAX || height > PNG_USER_HEIGHT_MAX)
+        throw std::invalid_argument("the picture would be " + size + ", and PNG pictures are written at most " +
+                                    std::to_string(PNG_USER_WIDTH_MAX) + "x" + std::to_string(PNG_USER_HEIGHT_MAX));
+    if (width * height > kMaxSamplesPerImage)
+        throw std::invalid_argument("the picture would be " + size + ", more than the " +
+                                    std::to_string(kMaxSamplesPerImage) + " a picture may have");
 }
 
 std::string encode_png(const Image& image) {

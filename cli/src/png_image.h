@@ -31,6 +31,11 @@ Image resolve_ids(const Framebuffer& fb);
 // sharp), with a grey separator `scale` pixels wide between them. One panel: just the magnification.
 Image side_by_side(const std::vector<Image>& panels, int scale);
 
+// Throws std::invalid_argument saying why unless a picture of width x height pixels can be made and written:
+// libpng writes at most PNG_USER_WIDTH_MAX x PNG_USER_HEIGHT_MAX (10^6 each way), and a picture of more pixels
+// than the largest scene has samples (kMaxSamplesPerImage) would not fit in memory.
+void check_picture_size(std::int64_t width, std::int64_t height);
+
 // The image encoded as PNG: the bytes of the file.
 std::string encode_png(const Image& image);
 

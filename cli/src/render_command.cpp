@@ -76,6 +76,14 @@ void run_render(const RenderOptions& o) {
                                 {"--coverage-out", o.coverage_out}});
     const Scene scene = o.use_default ? o.input.with_samples(default_scene()) : o.input.load();
     const std::string name = o.use_default ? "default scene" : o.input.path;
+    if (o.image_out) {
+        try {
+            check_picture_size(std::int64_t{scene.viewport.width} * o.magnify,
+                               std::int64_t{scene.viewport.height} * o.magnify);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("--magnify " + std::to_string(o.magnify) + ": " + e.what());
+        }
+    }
 
     reference::Stats stats;
     const auto start = std::chrono::steady_clock::now();

@@ -219,6 +219,24 @@ TEST_F(Cli, AnOutputWithTheLongestNameIsWritten) {
     EXPECT_EQ(read(name), kCornerIds);
 }
 
+// Refused before the render: libpng writes at most 10^6 pixels across, and 8192^2 magnified 64 times would
+// not fit in memory (each ended, after the work, in "Invalid IHDR data" or "std::bad_alloc").
+TEST_F(Cli, AMagnifiedPictureTooLargeIsRefused) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"viewport 20000 1\n", "the picture would be 1280000x64 pixels, and PNG pictures are written at most "
+                               "1000000x1000000"},
+        {"viewport 8192 8192\n", "the picture would be 524288x524288 pixels, more than the 268435456 a picture "
+                                 "may have"}};
+    for (const auto& [viewport, why] : cases) {
+        const Result r = rast("render " + file("big.tri", viewport + "tri 0 0 0 1 0 0 0 1 0\n") + " --magnify 64 -o " +
+                              out("big.png"));
+        EXPECT_EQ(r.status, 1);
+        EXPECT_TRUE(contains(r.out, "rast: error: --magnify 64: " + why + "\n")) << r.out;
+        EXPECT_FALSE(contains(r.out, "scene:")) << "it rendered first:\n" << r.out;
+        EXPECT_FALSE(std::filesystem::exists(dir / "big.png"));
+    }
+}
+
 // Writing is a rename over the path: it would replace a pipe or a device, not write into it.
 TEST_F(Cli, AnOutputThatIsNotARegularFileIsRefused) {
     ASSERT_EQ(::mkfifo(out("pipe").c_str(), 0600), 0);
