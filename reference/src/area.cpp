@@ -119,7 +119,7 @@ void accumulate_row(const Triangle& t, int j, int i0, int i1, Rational* row) {
 Rational pixel_area(const Triangle& t, int i, int j) {
     detail::require_finite(t);
     const Polygon strip = row_strip(t, j);
-    return area_left_of(strip, Rational(i + 1)) - area_left_of(strip, Rational(i));
+    return area_left_of(strip, Rational(i) + 1) - area_left_of(strip, Rational(i));
 }
 
 std::vector<Rational> coverage_area(const Scene& scene) {

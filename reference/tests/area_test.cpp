@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cfloat>
+#include <climits>
 #include <cmath>
 #include <random>
 
@@ -18,6 +19,13 @@ TEST(Area, HalfPixelTriangleIsExactlyOneHalf) {
     EXPECT_EQ(pixel_area(t, 0, 0), Rational(1, 2));
     EXPECT_EQ(pixel_area(reversed(t), 0, 0), Rational(1, 2));
     EXPECT_EQ(pixel_area(t, 1, 0), Rational(0));
+}
+
+// The last column an int names: (c, 0), (c + 2, 0), (c, 2) with c = INT_MAX holds pixel (c, 0) whole (its far
+// corner (c + 1, 1) is on the hypotenuse). Its right side c + 1 is past INT_MAX, where int overflowed.
+TEST(Area, PixelInTheLastColumnAnIntNames) {
+    const double c = INT_MAX;
+    EXPECT_EQ(pixel_area(flat(c, 0, c + 2, 0, c, 2), INT_MAX, 0), Rational(1));
 }
 
 // (0, 0), (2, 0), (0, 2): pixel (0, 0) is inside, (1, 0) and (0, 1) are cut on their diagonal, (1, 1)
