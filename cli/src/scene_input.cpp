@@ -8,9 +8,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rast::cli {
 namespace {
@@ -78,6 +80,29 @@ std::vector<CLI::Option*> mesh_view_options(CLI::App& command) {
 }
 
 bool SceneInput::is_mesh() const { return is_mesh_path(path); }
+
+std::string SceneInput::options() const {
+    // The shortest text that reads back as the same double; "=" keeps a leading minus from reading as an option.
+    const auto number = [](double value) {
+        char text[32];
+        return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+    };
+    std::string text;
+    if (samples) text += " --samples " + std::to_string(*samples);
+    if (!is_mesh()) return text;
+    text += " --width=" + std::to_string(view.width) + " --height=" + std::to_string(view.height);
+    const std::pair<const char*, const std::optional<Vec3>*> vectors[] = {
+        {"--eye", &view.eye}, {"--target", &view.target}, {"--up", &view.up}};
+    for (const auto& [name, value] : vectors)
+        if (*value)
+            text += std::string(" ") + name + "=" + number((*value)->x) + "," + number((*value)->y) + "," +
+                    number((*value)->z);
+    const std::pair<const char*, const std::optional<double>*> scalars[] = {
+        {"--fov", &view.fov_y_degrees}, {"--near", &view.near_plane}, {"--far", &view.far_plane}};
+    for (const auto& [name, value] : scalars)
+        if (*value) text += std::string(" ") + name + "=" + number(**value);
+    return text;
+}
 
 Scene SceneInput::with_samples(Scene scene) const {
     if (!samples) return scene;

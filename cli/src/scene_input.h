@@ -33,6 +33,9 @@ struct SceneInput {
     // would then be above the size limit (scene_limits.h).
     Scene with_samples(Scene scene) const;
     bool is_mesh() const;
+    // The options after SCENE that make this scene again: --samples if given, and for a mesh its viewport and
+    // the camera options given (e.g. " --samples 4 --width=512 --height=512 --eye=0,0,5"; empty if none).
+    std::string options() const;
 };
 
 // Registers SCENE, --samples, --width/--height and the camera options on a subcommand; returns SCENE.

@@ -92,6 +92,16 @@ TEST_F(CorpusCommands, CheckReportsSamplesCoveredTwiceAcrossASharedEdgeAndKeepsT
         << replayed.out;
 }
 
+// The case's reproduce line carries the options that made the scene: without --samples 4 it checked one
+// sample per pixel, and found other samples.
+TEST_F(CorpusCommands, TheKeptCaseNamesTheCommandThatReproducesIt) {
+    const std::string scene = file("fold.tri", kFold);
+    const Result r = rast("check " + scene + " --samples 4 --corpus-out " + (dir / "found").string());
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(slurp(dir / "found" / "check-fold-reference.tri"),
+                         "# reproduce: rast check " + scene + " --samples 4 --engine reference\n"));
+}
+
 // Every sample of a 4x4 viewport under a big triangle 0 that shares no edge. On it, three folds: A = 1 and B = 2
 // (kFold), B and C = 3 along x = 4 (C tiles A across x + y = 4, owning the samples on it), and A and D = 4 along
 // x = 0 (D owns only its left edge: (0.5, 1.5) and (0.5, 2.5)). E = 5 folds over triangle 0 along its bottom
