@@ -333,6 +333,16 @@ TEST_F(Cli, BenchRefusesBadOutputsBeforeRunning) {
     EXPECT_FALSE(std::filesystem::exists(dir / "a.json"));
 }
 
+// The hard-case section renders no mesh: --mesh would be ignored.
+TEST_F(Cli, BenchRefusesAMeshNoChosenSectionRenders) {
+    if (!contains(rast("--help").out, "\n  bench ")) GTEST_SKIP() << "built without rast bench";
+    const std::string mesh = file("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const Result r = rast("bench --quick --only hard --mesh " + mesh + " --json " + out("a.json"));
+    EXPECT_NE(r.status, 0);
+    EXPECT_TRUE(contains(r.out, "--mesh: no section chosen with --only renders a mesh (speed and aa do)")) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.json"));
+}
+
 TEST_F(Cli, HelpExplainsEveryOption) {
     const Result r = rast("render --help");
     EXPECT_EQ(r.status, 0);
