@@ -69,8 +69,9 @@ double directed_edge_bound(const Vertex& a, const Vertex& b, const Reach& p, con
     double m12 = 0, m34 = 0;
     const double e12 = product_error(d1, d2, f.u, f.underflow, m12);
     const double e34 = product_error(d3, d4, f.u, f.underflow, m34);
-    // Any intermediate that may leave the type's range makes the evaluation unbounded.
-    if (!(std::max(m12, m34) * (1 + 4 * f.u) < f.max)) return std::numeric_limits<double>::infinity();
+    // Any intermediate that may leave the type's range makes the evaluation unbounded: the products, and
+    // their difference, which is at most their sum (each product in range, the difference overflowed).
+    if (!((m12 + m34) * (1 + 4 * f.u) < f.max)) return std::numeric_limits<double>::infinity();
     return (e12 + e34 + f.u * (m12 + m34) * (1 + f.u) + f.underflow) * detail::kSlack;
 }
 

@@ -178,6 +178,12 @@ TEST(ErrorBound, ExactCasesAndLimits) {
     EXPECT_EQ(edge_error_bound(tri(0, 0, 1e39, 0, 0, 1), Precision::float32, vp), INFINITY);
     EXPECT_EQ(edge_error_bound(tri(-DBL_MAX, 0, DBL_MAX, 0, 0, 1), Precision::float64, vp), INFINITY);
     EXPECT_LT(edge_error_bound(tri(0, 0, 1e39, 0, 0, 1), Precision::float64, vp), INFINITY);
+    // Each product of edge 1 at (0.5, 0.5) fits in float32, their difference (3.7e38 exactly) does not: the
+    // evaluation gives infinity, so no finite bound holds.
+    const Triangle wide = tri(0x1.b7f98b96bd528p+61, 0x1.43197f2f982eap+63, -0x1.aaadf99c69708p+61,
+                              0x1.0e51483b80384p+64, -0x1.142e285dcd655p+64, 0x1.d9e2c97d8ea6p+61);
+    EXPECT_EQ(edge_error_bound(wide, Precision::float32, {10, 10}), INFINITY);
+    EXPECT_EQ(edge_error_bound_at(wide, Precision::float32, 0.5, 0.5)[1], INFINITY);
 }
 
 // The bound scales with the magnitudes: a vertex at 2^20 in float32 (ulp 1/8) gives errors of order
