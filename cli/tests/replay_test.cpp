@@ -130,26 +130,33 @@ TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
 }
 
 // In a child process that drops root (root may list any folder) to the user nobody: a folder it may not
-// list is among the cases, in path order, and replays as an error; exit code 0 means all of that held.
-void list_beside_a_locked_folder(const fs::path& dir) {
+// list is among the cases, in path order, and replays as an error, and so does a case in a folder it may
+// list but not enter; exit code 0 means all of that held.
+void list_beside_locked_folders(const fs::path& dir) {
     if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
     const std::vector<fs::path> given{dir};
-    if (rast::cli::corpus_files(given) != std::vector<fs::path>{dir / "a.tri", dir / "locked", dir / "z.tri"})
+    const fs::path locked = dir / "locked", unentered = dir / "unentered" / "case.tri";
+    if (rast::cli::corpus_files(given) != std::vector<fs::path>{dir / "a.tri", locked, unentered, dir / "z.tri"})
         std::_Exit(1);
-    const CaseReport report = rast::cli::replay_case(dir / "locked", rast::properties::all_engines());
-    const std::string expected = "ERROR " + (dir / "locked").string() + ": cannot list the folder: Permission denied";
-    const bool reported = report.status == CaseReport::Status::error && report.line == expected;
+    const auto engines = rast::properties::all_engines();
+    const CaseReport unlisted = rast::cli::replay_case(locked, engines);
+    const CaseReport unread = rast::cli::replay_case(unentered, engines);
+    const bool reported =
+        unlisted.status == CaseReport::Status::error && unread.status == CaseReport::Status::error &&
+        unlisted.line == "ERROR " + locked.string() + ": cannot list the folder: Permission denied" &&
+        unread.line == "ERROR " + unentered.string() + ": cannot open: Permission denied";
     std::_Exit(reported ? 0 : 2);
 }
 
-TEST_F(Replay, AFolderThatCannotBeListedIsAnErrorAndTheOthersStillRun) {
-    for (const char* name : {"a.tri", "z.tri", "locked/hidden.tri"}) {
+TEST_F(Replay, FoldersThatCannotBeListedOrEnteredAreErrorsAndTheOthersStillRun) {
+    for (const char* name : {"a.tri", "z.tri", "locked/hidden.tri", "unentered/case.tri"}) {
         fs::create_directories((dir / name).parent_path());
         std::ofstream(dir / name) << "\n";
     }
     fs::permissions(dir / "locked", fs::perms::none);
-    EXPECT_EXIT(list_beside_a_locked_folder(dir), ::testing::ExitedWithCode(0), "");
-    fs::permissions(dir / "locked", fs::perms::owner_all);
+    fs::permissions(dir / "unentered", fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    EXPECT_EXIT(list_beside_locked_folders(dir), ::testing::ExitedWithCode(0), "");
+    for (const char* folder : {"locked", "unentered"}) fs::permissions(dir / folder, fs::perms::owner_all);
 }
 
 }  // namespace
