@@ -121,6 +121,11 @@ void check_ascii_stl(TokenLines& in) {
     const auto allowed = [&](At where) {
         if (at != where) in.fail("expected " + std::string(next_keyword()) + ", got " + quote_token(in[0]));
     };
+    // 'endloop' and 'endfacet' stand alone on their lines: a keyword after one went unchecked.
+    const auto alone = [&in] {
+        if (in.size() != 1)
+            in.fail("expected " + quote_token(in[0]) + " alone on its line, got " + values(in.size() - 1) + " after it");
+    };
     int loop_vertices = 0;
     while (in.next()) {
         const std::string& keyword = in[0];
@@ -141,11 +146,13 @@ void check_ascii_stl(TokenLines& in) {
             ++loop_vertices;
         } else if (keyword == "endloop") {
             allowed(At::loop);
+            alone();
             if (loop_vertices != 3)
                 in.fail("a facet has " + std::to_string(loop_vertices) + " vertices; STL facets are triangles");
             at = At::loop_ended;
         } else if (keyword == "endfacet") {
             allowed(At::loop_ended);
+            alone();
             at = At::between_facets;
         } else if (keyword == "endsolid" || keyword == "solid") {
             allowed(At::between_facets);

@@ -326,6 +326,8 @@ TEST_F(MeshFiles, RejectsAnAsciiStlFacetCutShort) {
     EXPECT_EQ(error_of("a.stl", "solid s\nfacet normal 0 0 1\nvertex 0 0 0\n"),
               "a.stl:3: expected 'outer loop', got 'vertex'");
     EXPECT_EQ(error_of("a.stl", "solid s\nvertex 0 0 0\n"), "a.stl:2: expected 'facet' or 'endsolid', got 'vertex'");
+    EXPECT_EQ(error_of("a.stl", loop + "endloop endfacet\n"),
+              "a.stl:7: expected 'endloop' alone on its line, got 1 value after it");
 }
 
 // OpenMesh reads as many faces as an OFF or ASCII PLY header declares: one more line was dropped unseen.
