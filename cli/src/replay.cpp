@@ -115,10 +115,6 @@ std::string fail_line(const fs::path& file, const std::vector<Failure>& failures
     return line;
 }
 
-}  // namespace
-
-namespace {
-
 // Every .tri file below `folder` (following links to files, not to folders, as recursive_directory_iterator
 // does); a folder that cannot be listed is taken as itself, for replay_case to report.
 void collect_cases(const fs::path& folder, std::vector<fs::path>& found) {
