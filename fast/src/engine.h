@@ -25,6 +25,8 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 namespace rast::fast::detail {
 
@@ -73,9 +75,11 @@ inline void fixed_row_masks(const std::array<FixedEdge, 3>& edges, const Context
 }
 
 // How the kernels find the samples of block b (sample index s) that t covers; the paths that compute
-// row masks here leave them in `masks`, one per row of the block.
+// row masks here leave them in `masks`, one per row of the block. wide: on the wide path, t's spans of
+// the block's rows (spans_of, from row b.j0).
 template <Fault F>
-Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, std::uint64_t* masks) {
+Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, std::span<const Span> wide,
+                     std::uint64_t* masks) {
     Coverage cov;
     switch (t.p.path) {
         case Path::fixed:
@@ -85,7 +89,7 @@ Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, st
         case Path::wide: {
             const std::size_t samples = c.offsets.size();
             for (int r = 0; r < b.rows; ++r) {
-                const Span& span = t.spans[static_cast<std::size_t>(b.j0 + r - t.p.j_lo) * samples + s];
+                const Span& span = wide[static_cast<std::size_t>(r) * samples + s];
                 masks[r] = span_bits(std::max(span.lo, b.i0), std::min(span.hi, b.i0 + b.width - 1), b.i0);
             }
             cov.kind = Coverage::Kind::masks;
@@ -121,7 +125,7 @@ enum class TileClass { reject, accept, partial };
 
 // The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: an edge function is linear, so its
 // extremes over the samples' bounding rectangle are at corners chosen by the signs of its coefficients.
-// Exact for the integer path; the wide path reads its spans' extremes per band instead. For the float
+// Exact for the integer path; the wide path reads what its spans lie within per band instead. For the float
 // modes the double value at a corner is within margin of the exact one minus the mode's error bound, so
 // beyond +-margin the mode's sign is certain.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
@@ -165,6 +169,41 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
     return all_inside ? TileClass::accept : TileClass::partial;
 }
 
+// The wide path's spans (spans_of) of the triangles the tiles of one row of screen tiles need them for,
+// each found at the first such tile and kept for the others, which need the same rows: a big triangle
+// is partial in several tiles of a row. A thread keeps them for the row it is in, so they take memory
+// for one row of tiles, not for the whole screen. Only for the render they were found in: Setups are
+// named by their addresses, which a later render's may reuse.
+class BandSpans {
+public:
+    // Setup t's spans over the pixel rows [j0, j1], all in one row of tiles; t's rows of it, wherever
+    // they are asked for. Valid until the next call.
+    std::span<const Span> of(const Setup& t, const Context& c, int j0, int j1) {
+        const std::size_t count = static_cast<std::size_t>(j1 - j0 + 1) * c.offsets.size();
+        if (j0 / kTile != band_) {
+            clear();
+            band_ = j0 / kTile;
+        }
+        const auto [at, inserted] = at_.try_emplace(&t, spans_.size());
+        if (inserted) {
+            spans_.resize(spans_.size() + count);
+            spans_of(t, c, j0, j1, std::span(spans_).subspan(at->second, count));
+        }
+        return std::span<const Span>(spans_).subspan(at->second, count);
+    }
+    // Forgets every triangle's spans, keeping the storage.
+    void clear() {
+        spans_.clear();
+        at_.clear();
+        band_ = -1;
+    }
+
+private:
+    int band_ = -1;  // the row of tiles, j / kTile
+    std::vector<Span> spans_;
+    std::unordered_map<const Setup*, std::size_t> at_;  // where a triangle's spans start in spans_
+};
+
 // One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
 // kRowLanes of padding lets the last row's vector loads run past its end. Sized to the viewport's
 // largest tile (a small viewport's is small) and reused from tile to tile, and by a Workspace from
@@ -181,6 +220,7 @@ struct alignas(64) TileBuffer {
         z.resize(size + kRowLanes, std::numeric_limits<double>::infinity());
         ids.resize(size + kRowLanes, Framebuffer::kNoTriangle);
         planes = ExactPlanes();  // its planes are named by the ids of the last render's scene
+        wide.clear();
         fitted_for = render;
     }
     // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
@@ -239,6 +279,7 @@ struct alignas(64) TileBuffer {
     double stored_err = 0;  // an error bound of every depth stored since clear()
     bool per_sample = false;
     ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
+    BandSpans wide;
     double far = std::numeric_limits<double>::infinity();
     std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
 
@@ -358,6 +399,8 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     const int j0 = std::max(rect.j0, t.p.j_lo), j1 = std::min(rect.j1, t.p.j_hi);
     const TileClass cls = classify(t, c, i0, i1, j0, j1);
     if (cls == TileClass::reject) return;
+    const std::span<const Span> wide =
+        t.p.path == Path::wide && cls == TileClass::partial ? tile.wide.of(t, c, j0, j1) : std::span<const Span>();
     std::uint64_t masks[kTile];
     rasterize_blocks<F>(t.p, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
@@ -369,10 +412,10 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
                                 // Exact rows, one run each: the fixed path's walked from row to row, the
                                 // wide path's from its spans.
                                 if (t.p.path == Path::fixed) fixed_row_masks(t.fixed, c, b, s, masks);
-                                else coverage_of<F>(t, c, b, s, masks);
+                                else coverage_of<F>(t, c, b, s, wide, masks);
                                 return depth_runs(b, masks, plane, rows, undecided);
                             }
-                            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, masks) : Coverage{};
+                            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, wide, masks) : Coverage{};
                             return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
                                           : depth_block(b, cov, plane, rows, undecided);
                         });
@@ -676,18 +719,24 @@ std::vector<std::size_t> covered_by(const Triangle& triangle, Viewport vp, int s
     if (!placed) return out;
     const Setup t = setup_triangle<F>(*placed, c, false);
     std::uint64_t masks[kTile], covered[kTile];
-    for (int s = 0; s < samples; ++s)
-        for (int j0 = t.p.j_lo; j0 <= t.p.j_hi; j0 += kTile)
+    std::vector<Span> wide;
+    for (int j0 = t.p.j_lo; j0 <= t.p.j_hi; j0 += kTile) {
+        const int rows = std::min(kTile, t.p.j_hi - j0 + 1);
+        if (t.p.path == Path::wide) {
+            wide.resize(static_cast<std::size_t>(rows) * samples);
+            spans_of(t, c, j0, j0 + rows - 1, wide);
+        }
+        for (int s = 0; s < samples; ++s)
             for (int i0 = t.p.i_lo; i0 <= t.p.i_hi; i0 += kTile) {
-                const Block b{i0, j0, std::min(kTile, t.p.i_hi - i0 + 1), std::min(kTile, t.p.j_hi - j0 + 1),
-                              c.offsets[s].x, c.offsets[s].y};
-                coverage_block(b, coverage_of<F>(t, c, b, s, masks), covered);
+                const Block b{i0, j0, std::min(kTile, t.p.i_hi - i0 + 1), rows, c.offsets[s].x, c.offsets[s].y};
+                coverage_block(b, coverage_of<F>(t, c, b, s, wide, masks), covered);
                 for (int r = 0; r < b.rows; ++r)
                     for (std::uint64_t m = covered[r]; m != 0; m &= m - 1) {
                         const std::size_t i = static_cast<std::size_t>(i0 + std::countr_zero(m));
                         out.push_back((static_cast<std::size_t>(j0 + r) * vp.width + i) * samples + s);
                     }
             }
+    }
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -122,44 +122,129 @@ cpp_int scaled(double x, int bits) {
     return d.m / (cpp_int(1) << static_cast<unsigned>(-shift));  // exact: the low bits are zero on the grid
 }
 
-// The covered spans in integers of type Int; scale(x) is x · 2^bits as an Int.
+// Edge a -> b in fixed units: E(X, Y) = A X + B Y + C, A = ay - by, B = bx - ax, the tie rule in C.
+template <class Int>
+struct Edge {
+    Int a, b, c;
+};
+
+// The edges of v in integers of type Int; scale(x) is x · 2^bits as an Int.
 template <class Int, class Scale>
-std::vector<Span> solve_spans(Scale scale, const Corners& v, int bits, const std::array<bool, 3>& inclusive,
-                              std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi) {
-    // Edge a -> b in fixed units: E(X, Y) = A X + B Y + C, A = ay - by, B = bx - ax. Along a sample
-    // row X = i·2^bits + SX, so E is P·i + Q with P = A·2^bits, and from one sample row to the next Q
-    // grows by B·2^bits: RowSpans walks the rows.
-    struct Edge {
-        Int a, b, c;
-    };
-    std::array<Edge, 3> edges;
+std::array<Edge<Int>, 3> edges_of(Scale scale, const Corners& v, const std::array<bool, 3>& inclusive) {
+    std::array<Edge<Int>, 3> edges;
     for (int k = 0; k < 3; ++k) {
         const Vertex& p = v[k];
         const Vertex& q = v[(k + 1) % 3];
         const Int ax = scale(p.x), ay = scale(p.y);
-        Edge& e = edges[k];
+        Edge<Int>& e = edges[k];
         e.a = ay - scale(q.y);
         e.b = scale(q.x) - ax;
         // The tie rule as an integer bias: a non-inclusive edge needs E >= 1.
         e.c = -(e.a * ax + e.b * ay) - (inclusive[k] ? 0 : 1);
     }
+    return edges;
+}
+
+// The edges along the sample row of pixel row j and sample offset o: along it X = i·2^bits + SX, so E
+// is P·i + Q with P = A·2^bits, and from one sample row to the next Q grows by B·2^bits (RowSpans'
+// p, q and step).
+template <class Int>
+struct RowLines {
+    std::array<Int, 3> p, q, step;
+};
+
+template <class Int, class Scale>
+RowLines<Int> row_lines(const std::array<Edge<Int>, 3>& edges, Scale scale, int bits, SamplePoint o, int j) {
     const Int unit = Int(1) << bits;
+    const Int sx = scale(o.x);
+    const Int y = Int(j) * unit + scale(o.y);
+    RowLines<Int> lines;
+    for (int k = 0; k < 3; ++k) {
+        const Edge<Int>& e = edges[k];
+        lines.p[k] = e.a * unit;
+        lines.q[k] = e.a * sx + e.b * y + e.c;
+        lines.step[k] = e.b * unit;
+    }
+    return lines;
+}
+
+// The covered spans, walked row by row.
+template <class Int, class Scale>
+void solve_spans(Scale scale, const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                 std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi, std::span<Span> spans) {
+    const std::array<Edge<Int>, 3> edges = edges_of<Int>(scale, v, inclusive);
     const std::size_t samples = offsets.size();
-    std::vector<Span> spans(static_cast<std::size_t>(j_hi - j_lo + 1) * samples);
     for (std::size_t s = 0; s < samples; ++s) {
-        const Int sx = scale(offsets[s].x);
-        const Int y = Int(j_lo) * unit + scale(offsets[s].y);
-        std::array<Int, 3> p, q, step;
-        for (int k = 0; k < 3; ++k) {
-            const Edge& e = edges[k];
-            p[k] = e.a * unit;
-            q[k] = e.a * sx + e.b * y + e.c;
-            step[k] = e.b * unit;
-        }
-        RowSpans<Int> walk(p.data(), q.data(), step.data(), i_lo, i_hi);
+        RowLines<Int> lines = row_lines(edges, scale, bits, offsets[s], j_lo);
+        RowSpans<Int> walk(lines.p.data(), lines.q.data(), lines.step.data(), i_lo, i_hi);
         for (int j = j_lo; j <= j_hi; ++j) spans[static_cast<std::size_t>(j - j_lo) * samples + s] = walk.next();
     }
-    return spans;
+}
+
+// The bands, from each band's first and last rows alone: along the rows an edge's column bound,
+// floor(Q / d) with Q linear in the row, is monotone, so its extremes over the band are at its ends
+// (RowSpans says what each bound means).
+template <class Int, class Scale>
+std::vector<SpanBand> solve_bands(Scale scale, const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                                  std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
+                                  int rows) {
+    const std::array<Edge<Int>, 3> edges = edges_of<Int>(scale, v, inclusive);
+    std::vector<SpanBand> bands;
+    for (int first = j_lo; first <= j_hi;) {
+        const int last = std::min(j_hi, (first / rows + 1) * rows - 1);
+        SpanBand band;
+        for (const SamplePoint& o : offsets) {
+            const RowLines<Int> top = row_lines(edges, scale, bits, o, first);
+            const RowLines<Int> bottom = row_lines(edges, scale, bits, o, last);
+            // Over the band's rows: lo(j) between lo_least and lo_most, hi(j) between hi_least and
+            // hi_most; some rows, or all, may be empty by an edge along the rows.
+            int lo_least = i_lo, lo_most = i_lo, hi_least = i_hi, hi_most = i_hi;
+            bool some_empty = false, all_empty = false;
+            for (int k = 0; k < 3; ++k) {
+                const Int& p = top.p[k];
+                const Int d = column_divisor(p);
+                const Int f_top = floor_div(top.q[k], d), f_bottom = floor_div(bottom.q[k], d);
+                if (p == 0) {
+                    some_empty = some_empty || f_top < 0 || f_bottom < 0;
+                    all_empty = all_empty || (f_top < 0 && f_bottom < 0);
+                } else if (p > 0) {
+                    const int a = clamp_to(Int(-f_top), i_lo, i_hi), b = clamp_to(Int(-f_bottom), i_lo, i_hi);
+                    lo_least = std::max(lo_least, std::min(a, b));
+                    lo_most = std::max(lo_most, std::max(a, b));
+                } else {
+                    const int a = clamp_to(f_top, i_lo, i_hi), b = clamp_to(f_bottom, i_lo, i_hi);
+                    hi_least = std::min(hi_least, std::min(a, b));
+                    hi_most = std::min(hi_most, std::max(a, b));
+                }
+            }
+            // Each row's lo is at least lo_least and its hi at most hi_most: beyond each other, no row
+            // has a sample.
+            all_empty = all_empty || lo_least > hi_most;
+            band.lo_max = std::max(band.lo_max, lo_most);
+            band.hi_min = std::min(band.hi_min, some_empty ? INT_MIN : hi_least);
+            if (!all_empty) {
+                band.lo_min = std::min(band.lo_min, lo_least);
+                band.hi_max = std::max(band.hi_max, hi_most);
+            }
+        }
+        bands.push_back(band);
+        first = last + 1;
+    }
+    return bands;
+}
+
+// Calls solve(scale) with the narrowest integers that hold every edge function of v exactly: fixed
+// coordinates within 2^60 (sample positions, below 2^(24 + bits), are) keep A and B below 2^61, C below
+// 2^122 and Q below 2^124, so 128-bit integers do, at a small fraction of big-integer cost.
+template <class Solve>
+void with_integers(const Corners& v, int bits, Solve solve) {
+    const double limit = std::ldexp(1.0, 60 - bits);
+    const bool fits = std::all_of(v.begin(), v.end(), [limit](const Vertex& p) {
+        return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
+    });
+    // A double within 2^60 holding an integer converts exactly.
+    if (fits) solve([bits](double x) { return Int128(static_cast<std::int64_t>(std::ldexp(x, bits))); });
+    else solve([bits](double x) { return scaled(x, bits); });
 }
 
 }  // namespace
@@ -220,22 +305,24 @@ double ExactPlanes::depth(std::int64_t id, const Corners& t, double x, double y)
     return quotient(p.numerator.at(x, y), p.area);
 }
 
-std::vector<Span> wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
-                             std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo,
-                             int j_hi) {
-    // Fixed coordinates within 2^60 (sample positions, below 2^(24 + bits), are): then A and B stay
-    // below 2^61, C below 2^122 and Q below 2^124, so 128-bit integers hold every edge function exactly,
-    // at a small fraction of big-integer cost. A double within 2^60 holding an integer converts exactly.
-    const double limit = std::ldexp(1.0, 60 - bits);
-    const bool fits = std::all_of(v.begin(), v.end(), [limit](const Vertex& p) {
-        return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
+void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
+                std::span<Span> spans) {
+    with_integers(v, bits, [&](auto scale) {
+        using Int = decltype(scale(0.0));
+        solve_spans<Int>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi, spans);
     });
-    if (fits) {
-        const auto scale = [bits](double x) { return Int128(static_cast<std::int64_t>(std::ldexp(x, bits))); };
-        return solve_spans<Int128>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi);
-    }
-    const auto scale = [bits](double x) { return scaled(x, bits); };
-    return solve_spans<cpp_int>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi);
+}
+
+std::vector<SpanBand> wide_bands(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                                 std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
+                                 int rows) {
+    std::vector<SpanBand> bands;
+    with_integers(v, bits, [&](auto scale) {
+        using Int = decltype(scale(0.0));
+        bands = solve_bands<Int>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi, rows);
+    });
+    return bands;
 }
 
 }  // namespace rast::fast::detail

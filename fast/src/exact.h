@@ -42,11 +42,18 @@ private:
 };
 
 // For a counter-clockwise triangle whose coordinates are multiples of 2^-bits: for each pixel row j in
-// [j_lo, j_hi] and each sample s (row index (j - j_lo) * offsets.size() + s), the pixels i in
-// [i_lo, i_hi] whose sample (i + offset.x, j + offset.y) the triangle covers. inclusive[k] says whether
-// edge v[k] -> v[k+1] owns the samples exactly on it.
-std::vector<Span> wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
-                             std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo,
-                             int j_hi);
+// [j_lo, j_hi] and each sample s, spans[(j - j_lo) * offsets.size() + s] := the pixels i in [i_lo, i_hi]
+// whose sample (i + offset.x, j + offset.y) the triangle covers. inclusive[k] says whether edge
+// v[k] -> v[k+1] owns the samples exactly on it. spans holds (j_hi - j_lo + 1) * offsets.size() entries.
+void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
+                std::span<Span> spans);
+
+// For the same triangle and rows, the bands of `rows` pixel rows (band k holds the rows
+// [k rows, (k + 1) rows) of [j_lo, j_hi], k from j_lo / rows on) that its spans lie within, found
+// without its spans.
+std::vector<SpanBand> wide_bands(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                                 std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
+                                 int rows);
 
 }  // namespace rast::fast::detail

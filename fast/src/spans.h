@@ -10,7 +10,6 @@
 #include <cstddef>
 #include <span>
 #include <type_traits>
-#include <vector>
 
 namespace rast::fast::detail {
 
@@ -110,37 +109,13 @@ private:
     std::array<int, 3> sign_{};
 };
 
-// The extremes of the spans of a band of sample rows: lo_max and hi_min over all of them, lo_min and
-// hi_max over the non-empty ones. Columns [i0, i1] are inside every span exactly when lo_max <= i0 and
-// hi_min >= i1 (an empty span, lo > hi, fails that), and outside every one when hi_max < i0 or
-// lo_min > i1 (or when all are empty); spans on both sides of the columns but none across them go
-// unnoticed.
+// What a band of sample rows' spans are known to lie within: lo_max and hi_min bound the spans' lo
+// from above and hi from below over all of them, lo_min and hi_max their lo from below and hi from
+// above over the non-empty ones. Columns [i0, i1] are then inside every span when lo_max <= i0 and
+// hi_min >= i1 (an empty span, lo > hi, cannot meet that), and outside every one when hi_max < i0 or
+// lo_min > i1 (or when all are empty); anything else is left to the spans.
 struct SpanBand {
     int lo_min = INT_MAX, hi_max = INT_MIN, lo_max = INT_MIN, hi_min = INT_MAX;
 };
-
-// The bands of `spans`, laid out `samples` per pixel row from row j_lo to j_hi (j_lo >= 0): band k holds
-// the pixel rows [k rows, (k + 1) rows) among them, k from j_lo / rows on.
-inline std::vector<SpanBand> span_bands(std::span<const Span> spans, std::size_t samples, int j_lo, int j_hi,
-                                        int rows) {
-    std::vector<SpanBand> bands;
-    for (int first = j_lo; first <= j_hi;) {
-        const int last = std::min(j_hi, (first / rows + 1) * rows - 1);
-        SpanBand band;
-        for (std::size_t k = static_cast<std::size_t>(first - j_lo) * samples;
-             k < static_cast<std::size_t>(last - j_lo + 1) * samples; ++k) {
-            const Span& span = spans[k];
-            band.lo_max = std::max(band.lo_max, span.lo);
-            band.hi_min = std::min(band.hi_min, span.hi);
-            if (span.lo <= span.hi) {
-                band.lo_min = std::min(band.lo_min, span.lo);
-                band.hi_max = std::max(band.hi_max, span.hi);
-            }
-        }
-        bands.push_back(band);
-        first = last + 1;
-    }
-    return bands;
-}
 
 }  // namespace rast::fast::detail

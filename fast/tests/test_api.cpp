@@ -217,6 +217,25 @@ TEST(Api, ARendererForgetsTheLastScenesTriangles) {
     EXPECT_EQ(target.depth[target.index(2, 2)], 0.5);
 }
 
+// The wide path's spans, which a thread keeps while it works in one row of tiles, are the scene's own:
+// the next scene's big triangle is set up where the last one's was, and in the same row of tiles (the
+// only one), where the last scene's spans would draw the last scene's triangle. Its left edge slants,
+// so that the tiles it crosses need spans: at row 30 (y = 30.5) it is at x + 30 * 31.5 / 62 = x + 15.24.
+TEST(Api, ARendererForgetsTheLastScenesWideSpans) {
+    Renderer renderer;
+    Framebuffer target;
+    const double r = 0x1p30;  // beyond the 64-bit path's range: the wide path
+    for (const int x : {70, 20}) {
+        Scene scene;
+        scene.viewport = {200, 60};
+        scene.triangles.push_back({{{{x, -1, 0.5}, {2 * r, 30, 0.5}, {x + 30, 61, 0.5}}}});
+        renderer.render(scene, target);
+        EXPECT_EQ(target.id(x + 14, 30), Framebuffer::kNoTriangle) << x;
+        EXPECT_EQ(target.id(x + 15, 30), 0) << x;
+        EXPECT_EQ(target.ids, render(scene).ids) << x;
+    }
+}
+
 // One Renderer through scenes of other triangles, sizes, sample counts and precisions, each rendered as
 // a fresh call renders it; the thread count changes only between runs of them, so that its arena and
 // tile buffers are kept too.

@@ -1,0 +1,90 @@
+// wide_bands, what the wide path classifies whole tiles by, against the spans it stands for (wide_spans,
+// walked row by row): every span of a band lies within its band, and the bounds that decide trivial
+// accept (lo_max, and hi_min where every row has samples) are the spans' own extremes.
+#include "setup.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace rast::fast::detail {
+namespace {
+
+// A corner on the 2^-bits grid: near the viewport, or up to 2^far pixels away (beyond 2^(60 - bits)
+// the wide path takes big integers), sometimes on the row or column of the corner before it, so that
+// edges along the rows and columns come up.
+double coordinate(std::mt19937_64& rng, int bits, double near_size, int far, const double* previous) {
+    const int shape = std::uniform_int_distribution<int>(0, 9)(rng);
+    if (shape == 0 && previous) return *previous;
+    if (shape <= 3) {
+        const double magnitude = std::ldexp(1.0, std::uniform_int_distribution<int>(20, far)(rng));
+        return std::round(std::uniform_real_distribution<double>(-magnitude, magnitude)(rng));
+    }
+    const double x = std::uniform_real_distribution<double>(-8, near_size + 8)(rng);
+    return std::ldexp(std::round(std::ldexp(x, bits)), -bits);
+}
+
+TEST(WideBands, HoldEverySpanOfTheirRowsAndTheAcceptBoundsExactly) {
+    std::mt19937_64 rng(20261124);
+    const Viewport vp{150, 200};
+    int bands_checked = 0, exact_hi_min = 0;
+    for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+        for (const int samples : {1, 4, 16}) {
+            const Context c = make_context<Fault::none>(vp, samples, precision);
+            for (int n = 0; n < 150; ++n) {
+                Corners v;
+                for (int k = 0; k < 3; ++k) {
+                    v[k].x = coordinate(rng, c.bits, vp.width, 70, k > 0 ? &v[k - 1].x : nullptr);
+                    v[k].y = coordinate(rng, c.bits, vp.height, 70, k > 0 ? &v[k - 1].y : nullptr);
+                }
+                const std::optional<Placed> placed = place<Fault::none>(Triangle{v}, c);
+                if (!placed) continue;
+                const Placed& p = *placed;
+                std::array<bool, 3> owns;
+                for (int k = 0; k < 3; ++k)
+                    owns[k] = owns_ties<Fault::none>(p.v[k].x, p.v[k].y, p.v[(k + 1) % 3].x, p.v[(k + 1) % 3].y);
+                const std::vector<SpanBand> bands =
+                    wide_bands(p.v, c.bits, owns, c.offsets, p.i_lo, p.i_hi, p.j_lo, p.j_hi, kTile);
+                ASSERT_EQ(bands.size(), static_cast<std::size_t>(p.j_hi / kTile - p.j_lo / kTile + 1));
+                for (std::size_t k = 0; k < bands.size(); ++k) {
+                    const int first = std::max(p.j_lo, (p.j_lo / kTile + static_cast<int>(k)) * kTile);
+                    const int last = std::min(p.j_hi, first / kTile * kTile + kTile - 1);
+                    std::vector<Span> spans(static_cast<std::size_t>(last - first + 1) * samples);
+                    wide_spans(p.v, c.bits, owns, c.offsets, p.i_lo, p.i_hi, first, last, spans);
+                    SCOPED_TRACE(::testing::Message() << "precision " << static_cast<int>(precision) << ", samples "
+                                                      << samples << ", triangle " << n << ", band " << k);
+                    const SpanBand& band = bands[k];
+                    int lo_max = INT_MIN, hi_min = INT_MAX;
+                    bool every_row_covered = true;
+                    for (const Span& s : spans) {
+                        lo_max = std::max(lo_max, s.lo);
+                        hi_min = std::min(hi_min, s.hi);
+                        if (s.lo > s.hi) {
+                            every_row_covered = false;
+                            continue;
+                        }
+                        EXPECT_GE(s.lo, band.lo_min);
+                        EXPECT_LE(s.hi, band.hi_max);
+                    }
+                    EXPECT_EQ(band.lo_max, lo_max);
+                    EXPECT_LE(band.hi_min, hi_min);
+                    if (every_row_covered) {
+                        EXPECT_EQ(band.hi_min, hi_min);
+                        ++exact_hi_min;
+                    }
+                    if (::testing::Test::HasFailure()) return;
+                    ++bands_checked;
+                }
+            }
+        }
+    // The generator does reach the viewport, and rows of tiles every one of whose rows has samples.
+    EXPECT_GT(bands_checked, 1000);
+    EXPECT_GT(exact_hi_min, 200);
+}
+
+}  // namespace
+}  // namespace rast::fast::detail
