@@ -116,47 +116,47 @@ std::string fail_line(const fs::path& file, const std::vector<Failure>& failures
 }
 
 // Every .tri file below `folder` (following links to files, not to folders, as recursive_directory_iterator
-// does); a folder that cannot be listed is taken as itself, for replay_case to report.
-void collect_cases(const fs::path& folder, std::vector<fs::path>& found) {
+// does); a folder that cannot be listed is an entry of its own, with the reason.
+void collect_cases(const fs::path& folder, std::vector<CorpusEntry>& found) {
     std::error_code error;
     fs::directory_iterator entries(folder, error);
     for (; !error && entries != fs::directory_iterator(); entries.increment(error)) {
         const fs::directory_entry& entry = *entries;
         if (entry.is_directory(error) && !entry.is_symlink(error)) collect_cases(entry.path(), found);
-        else if (entry.is_regular_file(error) && entry.path().extension() == ".tri") found.push_back(entry.path());
+        else if (entry.is_regular_file(error) && entry.path().extension() == ".tri") found.push_back({entry.path(), {}});
     }
-    if (error) found.push_back(folder);
+    if (error) found.push_back({folder, error.message()});
 }
 
 }  // namespace
 
-std::vector<fs::path> corpus_files(std::span<const fs::path> paths) {
-    std::vector<fs::path> files;
+std::vector<CorpusEntry> corpus_files(std::span<const fs::path> paths) {
+    std::vector<CorpusEntry> entries;
     for (const fs::path& path : paths) {
-        if (!fs::is_directory(path)) {
-            files.push_back(path);
+        // Not the throwing overload: a file in a folder that may be listed but not entered cannot be
+        // stat'ed, and replay_case reports it.
+        std::error_code not_a_folder;
+        if (!fs::is_directory(path, not_a_folder)) {
+            entries.push_back({path, {}});
             continue;
         }
-        std::vector<fs::path> found;
+        std::vector<CorpusEntry> found;
         collect_cases(path, found);
-        std::sort(found.begin(), found.end());
-        files.insert(files.end(), found.begin(), found.end());
+        std::sort(found.begin(), found.end(), [](const CorpusEntry& a, const CorpusEntry& b) { return a.path < b.path; });
+        entries.insert(entries.end(), found.begin(), found.end());
     }
-    return files;
+    return entries;
+}
+
+CaseReport replay_entry(const CorpusEntry& entry, std::span<const Engine> engines) {
+    if (entry.unlisted) return error_report(entry.path, {0, "cannot list the folder: " + *entry.unlisted});
+    return replay_case(entry.path, engines);
 }
 
 CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
     std::string text;
     TriDocument doc;
     std::vector<const Property*> selected;
-    // corpus_files gives a folder it could not list as itself. Not the throwing overload: a file in a folder
-    // that may be listed but not entered cannot be stat'ed either, and read_text reports it.
-    std::error_code not_a_folder;
-    if (fs::is_directory(file, not_a_folder)) {
-        std::error_code error;
-        fs::directory_iterator(file, error);
-        return error_report(file, {0, "cannot list the folder" + (error ? ": " + error.message() : std::string())});
-    }
     try {
         text = read_text(file);
         std::istringstream in(text);

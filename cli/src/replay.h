@@ -7,16 +7,24 @@
 #include <rast/properties.h>
 
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace rast::cli {
 
-// The .tri files to replay: a file is taken as given; a folder contributes every .tri file below it,
-// in path order, so that a run's output is the same everywhere. A folder below that cannot be listed is
-// taken as itself: replay_case reports it as an error, and the other cases still run.
-std::vector<std::filesystem::path> corpus_files(std::span<const std::filesystem::path> paths);
+// One entry of the cases to replay: a .tri file, or a folder that could not be listed, with the reason.
+struct CorpusEntry {
+    std::filesystem::path path;
+    std::optional<std::string> unlisted;  // a folder: why it could not be listed
+    bool operator==(const CorpusEntry&) const = default;
+};
+
+// The cases to replay: a file is taken as given; a folder contributes every .tri file below it, in path
+// order, so that a run's output is the same everywhere. A folder that cannot be listed is an entry of
+// its own: replay_entry reports it as an error, and the other cases still run.
+std::vector<CorpusEntry> corpus_files(std::span<const std::filesystem::path> paths);
 
 struct CaseReport {
     enum class Status { pass, fail, error };
@@ -33,5 +41,8 @@ struct CaseReport {
 // that cannot be read, is malformed, names no property, an unknown one or one twice, or whose properties
 // apply to none of the engines (it would check nothing) is an error.
 CaseReport replay_case(const std::filesystem::path& file, std::span<const properties::Engine> engines);
+
+// replay_case for a file; for a folder that could not be listed, an error that says why.
+CaseReport replay_entry(const CorpusEntry& entry, std::span<const properties::Engine> engines);
 
 }  // namespace rast::cli

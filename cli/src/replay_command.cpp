@@ -26,8 +26,8 @@ void add_replay_command(CLI::App& app, int& status) {
         const auto files = corpus_files(*paths);
         if (files.empty()) throw std::runtime_error("no .tri case found: nothing to replay");
         std::size_t passed = 0, failed = 0;
-        for (const auto& file : files) {
-            const CaseReport report = replay_case(file, engines);
+        for (const auto& entry : files) {
+            const CaseReport report = replay_entry(entry, engines);
             std::cout << report.line << std::endl;
             (report.status == CaseReport::Status::pass ? passed : failed) += 1;
         }

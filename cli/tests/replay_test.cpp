@@ -126,26 +126,34 @@ TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
     fs::create_directories(dir / "b");
     for (const char* name : {"b/z.tri", "b/a.tri", "a.tri", "notes.txt"}) std::ofstream(dir / name) << "\n";
     const std::vector<fs::path> given{dir / "b", dir / "a.tri"};
-    EXPECT_EQ(rast::cli::corpus_files(given), (std::vector<fs::path>{dir / "b/a.tri", dir / "b/z.tri", dir / "a.tri"}));
+    EXPECT_EQ(rast::cli::corpus_files(given),
+              (std::vector<rast::cli::CorpusEntry>{{dir / "b/a.tri", {}}, {dir / "b/z.tri", {}}, {dir / "a.tri", {}}}));
 }
 
 // In a child process that drops root (root may list any folder) to the user nobody: a folder it may not
-// list is among the cases, in path order, and replays as an error, and so does a case in a folder it may
-// list but not enter; exit code 0 means all of that held.
+// list is among the cases, in path order, with the reason, and replays as an error, and so does a case in
+// a folder it may list but not enter, found there or given itself; exit code 0 means all of that held.
 void list_beside_locked_folders(const fs::path& dir) {
+    using rast::cli::CorpusEntry;
     if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
     const std::vector<fs::path> given{dir};
     const fs::path locked = dir / "locked", unentered = dir / "unentered" / "case.tri";
-    if (rast::cli::corpus_files(given) != std::vector<fs::path>{dir / "a.tri", locked, unentered, dir / "z.tri"})
+    const std::vector<CorpusEntry> entries = rast::cli::corpus_files(given);
+    if (entries != std::vector<CorpusEntry>{{dir / "a.tri", {}},
+                                            {locked, "Permission denied"},
+                                            {unentered, {}},
+                                            {dir / "z.tri", {}}})
         std::_Exit(1);
+    const std::vector<fs::path> unentered_given{unentered};
+    if (rast::cli::corpus_files(unentered_given) != std::vector<CorpusEntry>{{unentered, {}}}) std::_Exit(2);
     const auto engines = rast::properties::all_engines();
-    const CaseReport unlisted = rast::cli::replay_case(locked, engines);
-    const CaseReport unread = rast::cli::replay_case(unentered, engines);
+    const CaseReport unlisted = rast::cli::replay_entry(entries[1], engines);
+    const CaseReport unread = rast::cli::replay_entry(entries[2], engines);
     const bool reported =
         unlisted.status == CaseReport::Status::error && unread.status == CaseReport::Status::error &&
         unlisted.line == "ERROR " + locked.string() + ": cannot list the folder: Permission denied" &&
         unread.line == "ERROR " + unentered.string() + ": cannot open: Permission denied";
-    std::_Exit(reported ? 0 : 2);
+    std::_Exit(reported ? 0 : 4);
 }
 
 TEST_F(Replay, FoldersThatCannotBeListedOrEnteredAreErrorsAndTheOthersStillRun) {
