@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <string>
@@ -68,16 +69,21 @@ Temporary create_temporary(const std::filesystem::path& target) {
     // and its temporary, longer by the pid, counter and suffix, must be legal too. Built by appending:
     // GCC 12 warns falsely (-Wrestrict) on "." + std::string.
     constexpr std::size_t kNameKept = 200;
+    const std::string name = target.filename().string();
+    std::size_t kept = std::min(name.size(), kNameKept);
+    // Not inside a UTF-8 character (a continuation byte is 10xxxxxx): a file system that checks names'
+    // encoding would refuse half of one.
+    while (kept > 0 && kept < name.size() && (static_cast<unsigned char>(name[kept]) & 0xC0) == 0x80) --kept;
     std::string stem = ".";
-    stem += target.filename().string().substr(0, kNameKept);
+    stem += name.substr(0, kept);
     stem += '.';
     stem += std::to_string(::getpid());
     stem += '.';
     for (int attempt = 0; attempt < 100; ++attempt) {
-        std::string name = stem;
-        name += std::to_string(counter++);
-        name += ".tmp";
-        const std::string path = (dir / name).string();
+        std::string temporary = stem;
+        temporary += std::to_string(counter++);
+        temporary += ".tmp";
+        const std::string path = (dir / temporary).string();
         const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0) return Temporary(path, fd);
         if (errno != EEXIST) cannot_write(errno, target, "cannot create a temporary file in '" + dir.string() + "'");
@@ -132,6 +138,14 @@ void write_files_atomic(std::span<const FileContent> files) {
             const int error = errno;
             const std::string step = "cannot rename the temporary file '" + temps[k].path() + "' over it";
             if (replaced.empty()) cannot_write(error, target, step);
+            // The files already replaced stay so: their renames are made as durable as they can be first,
+            // and this error, not one of those, is the one reported.
+            for (std::size_t j = 0; j < k; ++j) {
+                try {
+                    sync_directory_of(files[j].first);
+                } catch (const std::system_error&) {
+                }
+            }
             fail(error, "cannot write '" + target.string() + "': " + step + "; already replaced: " + replaced);
         }
         temps[k].committed();

@@ -146,6 +146,22 @@ TEST_F(AtomicFile, NameAsLongAsTheFileSystemAllowsIsWritten) {
     EXPECT_EQ(entries(), 1u);
 }
 
+// The temporary keeps the first 200 bytes of a long name, less the start of a UTF-8 character cut there
+// ("é" is C3 A9, at bytes 199 and 200). Seen through the error of a target that is a folder, which names
+// the temporary.
+TEST_F(AtomicFile, TemporaryOfALongNameKeepsWholeCharacters) {
+    const fs::path target = dir_ / (std::string(199, 'n') + "\xC3\xA9" + std::string(40, 'n'));
+    fs::create_directories(target);
+    try {
+        write_file_atomic(target, "x");
+        FAIL() << "no error";
+    } catch (const std::system_error& e) {
+        const std::string temporary = (dir_ / ("." + std::string(199, 'n') + ".")).string();
+        EXPECT_NE(std::string(e.what()).find("the temporary file '" + temporary), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(entries(), 1u);
+}
+
 TEST_F(AtomicFile, SeveralFilesAreAllWritten) {
     const FileContent files[] = {{dir_ / "a.txt", "first"}, {dir_ / "b.txt", "second"}};
     write_files_atomic(files);
