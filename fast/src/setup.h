@@ -108,9 +108,9 @@ struct Setup {
     double float_margin = std::numeric_limits<double>::infinity();
     // Wide path: which edges own the samples exactly on them (wide_spans' inclusive), and with
     // classify_tiles what its spans lie within per row of screen tiles. The spans themselves are found
-    // where a tile needs them (spans_of): kept from binning to the end of the render, 8 bytes per row
-    // and sample each, 5000 triangles reaching 3 * 10^6 pixels beyond a 1080p screen of 16 samples
-    // held 1.09 GB.
+    // where a tile needs them (spans_of) rather than kept from binning to the end of the render: at 8
+    // bytes per row and sample each, thousands of triangles reaching far beyond a large screen held
+    // gigabytes.
     std::array<bool, 3> owns{};
     std::vector<SpanBand> bands;
 };
