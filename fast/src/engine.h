@@ -171,11 +171,15 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
 
 // The wide path's spans (spans_of) of the triangles the tiles of one row of screen tiles need them for,
 // each found at the first such tile and kept for the others, which need the same rows: a big triangle
-// is partial in several tiles of a row. A thread keeps them for the row it is in, so they take memory
-// for one row of tiles, not for the whole screen. Only for the render they were found in: Setups are
-// named by their addresses, which a later render's may reuse.
+// is partial in several tiles of a row. A thread keeps them for the row it is in, and at most `kept`
+// of them (more triangles' are found again when needed), so they take memory for one row of tiles,
+// not for the whole screen, and not for all of a scene's triangles. Only for the render they were found
+// in: Setups are named by their addresses, which a later render's may reuse.
 class BandSpans {
 public:
+    static constexpr std::size_t kKept = std::size_t{1} << 22;  // 32 MB
+
+    explicit BandSpans(std::size_t kept = kKept) : kept_(kept) {}
     // Setup t's spans over the pixel rows [j0, j1], all in one row of tiles; t's rows of it, wherever
     // they are asked for. Valid until the next call.
     std::span<const Span> of(const Setup& t, const Context& c, int j0, int j1) {
@@ -184,8 +188,10 @@ public:
             clear();
             band_ = j0 / kTile;
         }
-        const auto [at, inserted] = at_.try_emplace(&t, spans_.size());
-        if (inserted) {
+        auto at = at_.find(&t);
+        if (at == at_.end()) {
+            if (spans_.size() + count > kept_) forget();
+            at = at_.emplace(&t, spans_.size()).first;
             spans_.resize(spans_.size() + count);
             spans_of(t, c, j0, j1, std::span(spans_).subspan(at->second, count));
         }
@@ -193,12 +199,16 @@ public:
     }
     // Forgets every triangle's spans, keeping the storage.
     void clear() {
-        spans_.clear();
-        at_.clear();
+        forget();
         band_ = -1;
     }
 
 private:
+    void forget() {
+        spans_.clear();
+        at_.clear();
+    }
+    std::size_t kept_;
     int band_ = -1;  // the row of tiles, j / kTile
     std::vector<Span> spans_;
     std::unordered_map<const Setup*, std::size_t> at_;  // where a triangle's spans start in spans_

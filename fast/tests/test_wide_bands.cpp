@@ -1,6 +1,8 @@
 // wide_bands, what the wide path classifies whole tiles by, against the spans it stands for (wide_spans,
 // walked row by row): every span of a band lies within its band, and the bounds that decide trivial
-// accept (lo_max, and hi_min where every row has samples) are the spans' own extremes.
+// accept (lo_max, and hi_min where every row has samples) are the spans' own extremes. And BandSpans,
+// where the tiles of a row of tiles find the spans they need.
+#include "engine.h"
 #include "setup.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +11,8 @@
 #include <climits>
 #include <cmath>
 #include <random>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace rast::fast::detail {
@@ -84,6 +88,35 @@ TEST(WideBands, HoldEverySpanOfTheirRowsAndTheAcceptBoundsExactly) {
     // The generator does reach the viewport, and rows of tiles every one of whose rows has samples.
     EXPECT_GT(bands_checked, 1000);
     EXPECT_GT(exact_hi_min, 200);
+}
+
+// BandSpans gives a triangle's spans as spans_of finds them, whether it kept them from an earlier tile,
+// dropped them for room (it keeps three triangles' here) or moved to another row of tiles in between.
+TEST(BandSpans, GiveEachTrianglesSpansWhateverTheyKept) {
+    const Context c = make_context<Fault::none>({200, 150}, 4, Precision::fixed8);
+    const double r = 0x1p30;  // beyond the 64-bit path's range: the wide path
+    std::vector<detail::Setup> setups;  // qualified: a test body sees testing::Test::Setup
+    for (int k = 0; k < 5; ++k) {
+        const double x = 20.5 + 30 * k;
+        const std::optional<Placed> p = place<Fault::none>(Triangle{{{{x, -1, 0}, {2 * r, 70, 0}, {x + 30, 151, 0}}}}, c);
+        ASSERT_TRUE(p && p->path == Path::wide);
+        setups.push_back(setup_triangle<Fault::none>(*p, c, true));
+    }
+    BandSpans band_spans(3 * kTile * c.offsets.size());
+    const std::pair<int, int> visits[] = {{0, 0}, {1, 0}, {2, 0}, {0, 0}, {3, 0}, {4, 0}, {0, 0},
+                                          {1, 0}, {2, 1}, {1, 1}, {2, 0}, {4, 2}, {4, 2}, {0, 1}};
+    for (const auto& [k, band] : visits) {
+        const detail::Setup& t = setups[static_cast<std::size_t>(k)];
+        const int j0 = std::max(t.p.j_lo, band * kTile), j1 = std::min(t.p.j_hi, band * kTile + kTile - 1);
+        std::vector<Span> expected(static_cast<std::size_t>(j1 - j0 + 1) * c.offsets.size());
+        spans_of(t, c, j0, j1, expected);
+        const std::span<const Span> given = band_spans.of(t, c, j0, j1);
+        ASSERT_EQ(given.size(), expected.size());
+        for (std::size_t n = 0; n < expected.size(); ++n) {
+            EXPECT_EQ(given[n].lo, expected[n].lo) << "triangle " << k << ", band " << band << ", span " << n;
+            EXPECT_EQ(given[n].hi, expected[n].hi) << "triangle " << k << ", band " << band << ", span " << n;
+        }
+    }
 }
 
 }  // namespace
