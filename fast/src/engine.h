@@ -180,22 +180,23 @@ public:
     static constexpr std::size_t kKept = std::size_t{1} << 22;  // 32 MB
 
     explicit BandSpans(std::size_t kept = kKept) : kept_(kept) {}
-    // Setup t's spans over the pixel rows [j0, j1], all in one row of tiles; t's rows of it, wherever
-    // they are asked for. Valid until the next call.
+    // Setup t's spans over the pixel rows [j0, j1], all in one row of tiles (the tiles of a row ask for
+    // the same rows of a triangle: its own rows there). Valid until the next call.
     std::span<const Span> of(const Setup& t, const Context& c, int j0, int j1) {
         const std::size_t count = static_cast<std::size_t>(j1 - j0 + 1) * c.offsets.size();
         if (j0 / kTile != band_) {
             clear();
             band_ = j0 / kTile;
         }
-        auto at = at_.find(&t);
-        if (at == at_.end()) {
-            if (spans_.size() + count > kept_) forget();
-            at = at_.emplace(&t, spans_.size()).first;
-            spans_.resize(spans_.size() + count);
-            spans_of(t, c, j0, j1, std::span(spans_).subspan(at->second, count));
-        }
-        return std::span<const Span>(spans_).subspan(at->second, count);
+        const auto found = at_.find(&t);
+        if (found != at_.end() && found->second.j0 == j0 && found->second.j1 == j1)
+            return std::span<const Span>(spans_).subspan(found->second.at, count);
+        if (spans_.size() + count > kept_) forget();
+        const Kept kept{spans_.size(), j0, j1};
+        at_.insert_or_assign(&t, kept);
+        spans_.resize(spans_.size() + count);
+        spans_of(t, c, j0, j1, std::span(spans_).subspan(kept.at, count));
+        return std::span<const Span>(spans_).subspan(kept.at, count);
     }
     // Forgets every triangle's spans, keeping the storage.
     void clear() {
@@ -211,7 +212,11 @@ private:
     std::size_t kept_;
     int band_ = -1;  // the row of tiles, j / kTile
     std::vector<Span> spans_;
-    std::unordered_map<const Setup*, std::size_t> at_;  // where a triangle's spans start in spans_
+    struct Kept {
+        std::size_t at;  // where in spans_
+        int j0, j1;      // the rows
+    };
+    std::unordered_map<const Setup*, Kept> at_;
 };
 
 // One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
@@ -409,13 +414,13 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     const int j0 = std::max(rect.j0, t.p.j_lo), j1 = std::min(rect.j1, t.p.j_hi);
     const TileClass cls = classify(t, c, i0, i1, j0, j1);
     if (cls == TileClass::reject) return;
-    const std::span<const Span> wide =
-        t.p.path == Path::wide && cls == TileClass::partial ? tile.wide.of(t, c, j0, j1) : std::span<const Span>();
+    std::span<const Span> wide;  // a partial tile's, found at the first sample index, past hierarchical z
     std::uint64_t masks[kTile];
     rasterize_blocks<F>(t.p, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             const bool scalar = b.width * b.rows <= kScalarSamples;
                             const bool partial = cls == TileClass::partial;
+                            if (partial && t.p.path == Path::wide && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
                             if (partial && t.p.path == Path::fixed && scalar)
                                 return fixed_block_depth(t.fixed, c, b, s, plane, rows, undecided);
                             if (partial && t.p.path != Path::floating && !scalar) {

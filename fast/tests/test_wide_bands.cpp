@@ -91,7 +91,8 @@ TEST(WideBands, HoldEverySpanOfTheirRowsAndTheAcceptBoundsExactly) {
 }
 
 // BandSpans gives a triangle's spans as spans_of finds them, whether it kept them from an earlier tile,
-// dropped them for room (it keeps three triangles' here) or moved to another row of tiles in between.
+// dropped them for room (it keeps three triangles' here), moved to another row of tiles in between, or
+// was asked for other rows of the same row of tiles (band -1: rows 10 to 20 of the first).
 TEST(BandSpans, GiveEachTrianglesSpansWhateverTheyKept) {
     const Context c = make_context<Fault::none>({200, 150}, 4, Precision::fixed8);
     const double r = 0x1p30;  // beyond the 64-bit path's range: the wide path
@@ -103,11 +104,12 @@ TEST(BandSpans, GiveEachTrianglesSpansWhateverTheyKept) {
         setups.push_back(setup_triangle<Fault::none>(*p, c, true));
     }
     BandSpans band_spans(3 * kTile * c.offsets.size());
-    const std::pair<int, int> visits[] = {{0, 0}, {1, 0}, {2, 0}, {0, 0}, {3, 0}, {4, 0}, {0, 0},
-                                          {1, 0}, {2, 1}, {1, 1}, {2, 0}, {4, 2}, {4, 2}, {0, 1}};
+    const std::pair<int, int> visits[] = {{0, 0}, {1, 0}, {2, 0}, {0, 0}, {3, 0}, {4, 0}, {0, 0}, {1, 0},  {2, 1},
+                                          {1, 1}, {2, 0}, {4, 2}, {4, 2}, {0, 1}, {0, 0}, {0, -1}, {0, 0}};
     for (const auto& [k, band] : visits) {
         const detail::Setup& t = setups[static_cast<std::size_t>(k)];
-        const int j0 = std::max(t.p.j_lo, band * kTile), j1 = std::min(t.p.j_hi, band * kTile + kTile - 1);
+        const int j0 = band < 0 ? 10 : std::max(t.p.j_lo, band * kTile);
+        const int j1 = band < 0 ? 20 : std::min(t.p.j_hi, band * kTile + kTile - 1);
         std::vector<Span> expected(static_cast<std::size_t>(j1 - j0 + 1) * c.offsets.size());
         spans_of(t, c, j0, j1, expected);
         const std::span<const Span> given = band_spans.of(t, c, j0, j1);
