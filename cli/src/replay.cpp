@@ -38,6 +38,8 @@ CaseReport error_report(const fs::path& file, const CaseError& e) {
 
 // The whole file, read once: the parser gets it, and header problems are located in it.
 std::string read_text(const fs::path& file) {
+    std::error_code unseen;
+    if (fs::is_directory(file, unseen)) throw CaseError{0, "is a folder, not a case"};
     std::ifstream in(file, std::ios::binary);
     if (!in) throw CaseError{0, "cannot open: " + std::generic_category().message(errno)};
     std::ostringstream text;
@@ -116,14 +118,22 @@ std::string fail_line(const fs::path& file, const std::vector<Failure>& failures
 }
 
 // Every .tri file below `folder` (following links to files, not to folders, as recursive_directory_iterator
-// does); a folder that cannot be listed is an entry of its own, with the reason.
+// does); a folder that cannot be listed is an entry of its own, with the reason. A .tri name whose file
+// cannot be looked at (a link into a folder that cannot be entered, or to nothing) is a case too, which
+// replay_case reports as unreadable; folders, and files that are not regular (a FIFO would block the
+// read), are not cases.
 void collect_cases(const fs::path& folder, std::vector<CorpusEntry>& found) {
     std::error_code error;
     fs::directory_iterator entries(folder, error);
     for (; !error && entries != fs::directory_iterator(); entries.increment(error)) {
         const fs::directory_entry& entry = *entries;
-        if (entry.is_directory(error) && !entry.is_symlink(error)) collect_cases(entry.path(), found);
-        else if (entry.is_regular_file(error) && entry.path().extension() == ".tri") found.push_back({entry.path(), {}});
+        std::error_code unseen;
+        const fs::file_status status = entry.status(unseen);
+        std::error_code unlinked;
+        if (status.type() == fs::file_type::directory && !entry.is_symlink(unlinked)) collect_cases(entry.path(), found);
+        else if (entry.path().extension() == ".tri" &&
+                 (unseen || fs::is_regular_file(status) || status.type() == fs::file_type::not_found))
+            found.push_back({entry.path(), {}});
     }
     if (error) found.push_back({folder, error.message()});
 }

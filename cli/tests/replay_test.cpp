@@ -6,10 +6,12 @@
 #include <rast/tri_format.h>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace {
@@ -120,6 +122,8 @@ TEST_F(Replay, CasesThatTestNothingAreErrors) {
     std::ofstream(dir / "float.tri") << "# properties: float_within_bound\nviewport 2 2\ntri 0 0 0  2 0 0  0 2 0\n";
     EXPECT_EQ(rast::cli::replay_case(dir / "float.tri", std::vector{rast::properties::reference_engine()}).line,
               "ERROR " + (dir / "float.tri").string() + ":1: checks nothing: no named property applies to any engine");
+    // A folder given as a case (corpus_files lists folders, replay_case reads files).
+    EXPECT_EQ(rast::cli::replay_case(dir, engines).line, "ERROR " + dir.string() + ": is a folder, not a case");
 }
 
 TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
@@ -131,8 +135,9 @@ TEST_F(Replay, AFolderContributesItsCasesInPathOrder) {
 }
 
 // In a child process that drops root (root may list any folder) to the user nobody: a folder it may not
-// list is among the cases, in path order, with the reason, and replays as an error, and so does a case in
-// a folder it may list but not enter, found there or given itself; exit code 0 means all of that held.
+// list is among the cases, in path order, with the reason, and replays as an error, and so do a case in a
+// folder it may list but not enter, found there or given itself, a link to a case there and a link to
+// nothing; a link to a folder and a FIFO are not cases. Exit code 0 means all of that held.
 void list_beside_locked_folders(const fs::path& dir) {
     using rast::cli::CorpusEntry;
     if (::geteuid() == 0 && ::setuid(65534) != 0) std::_Exit(3);
@@ -140,6 +145,8 @@ void list_beside_locked_folders(const fs::path& dir) {
     const fs::path locked = dir / "locked", unentered = dir / "unentered" / "case.tri";
     const std::vector<CorpusEntry> entries = rast::cli::corpus_files(given);
     if (entries != std::vector<CorpusEntry>{{dir / "a.tri", {}},
+                                            {dir / "gone.tri", {}},
+                                            {dir / "link.tri", {}},
                                             {locked, "Permission denied"},
                                             {unentered, {}},
                                             {dir / "z.tri", {}}})
@@ -147,13 +154,16 @@ void list_beside_locked_folders(const fs::path& dir) {
     const std::vector<fs::path> unentered_given{unentered};
     if (rast::cli::corpus_files(unentered_given) != std::vector<CorpusEntry>{{unentered, {}}}) std::_Exit(2);
     const auto engines = rast::properties::all_engines();
-    const CaseReport unlisted = rast::cli::replay_entry(entries[1], engines);
-    const CaseReport unread = rast::cli::replay_entry(entries[2], engines);
-    const bool reported =
-        unlisted.status == CaseReport::Status::error && unread.status == CaseReport::Status::error &&
-        unlisted.line == "ERROR " + locked.string() + ": cannot list the folder: Permission denied" &&
-        unread.line == "ERROR " + unentered.string() + ": cannot open: Permission denied";
-    std::_Exit(reported ? 0 : 4);
+    const std::string expected[] = {
+        "ERROR " + (dir / "gone.tri").string() + ": cannot open: No such file or directory",
+        "ERROR " + (dir / "link.tri").string() + ": cannot open: Permission denied",
+        "ERROR " + locked.string() + ": cannot list the folder: Permission denied",
+        "ERROR " + unentered.string() + ": cannot open: Permission denied"};
+    for (std::size_t k = 0; k < std::size(expected); ++k) {
+        const CaseReport report = rast::cli::replay_entry(entries[k + 1], engines);
+        if (report.status != CaseReport::Status::error || report.line != expected[k]) std::_Exit(4);
+    }
+    std::_Exit(0);
 }
 
 TEST_F(Replay, FoldersThatCannotBeListedOrEnteredAreErrorsAndTheOthersStillRun) {
@@ -161,6 +171,10 @@ TEST_F(Replay, FoldersThatCannotBeListedOrEnteredAreErrorsAndTheOthersStillRun) 
         fs::create_directories((dir / name).parent_path());
         std::ofstream(dir / name) << "\n";
     }
+    fs::create_symlink("locked/hidden.tri", dir / "link.tri");
+    fs::create_symlink("nowhere.tri", dir / "gone.tri");
+    fs::create_directory_symlink("unentered", dir / "folder-link.tri");
+    ASSERT_EQ(::mkfifo((dir / "pipe.tri").c_str(), 0644), 0);
     fs::permissions(dir / "locked", fs::perms::none);
     fs::permissions(dir / "unentered", fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
     EXPECT_EXIT(list_beside_locked_folders(dir), ::testing::ExitedWithCode(0), "");
