@@ -71,9 +71,10 @@ Temporary create_temporary(const std::filesystem::path& target) {
     constexpr std::size_t kNameKept = 200;
     const std::string name = target.filename().string();
     std::size_t kept = std::min(name.size(), kNameKept);
-    // Not inside a UTF-8 character (a continuation byte is 10xxxxxx): a file system that checks names'
-    // encoding would refuse half of one.
-    while (kept > 0 && kept < name.size() && (static_cast<unsigned char>(name[kept]) & 0xC0) == 0x80) --kept;
+    // Not inside a UTF-8 character (a continuation byte is 10xxxxxx, at most three follow a first byte):
+    // a file system that checks names' encoding would refuse half of one.
+    const auto continues = [&name](std::size_t at) { return (static_cast<unsigned char>(name[at]) & 0xC0) == 0x80; };
+    for (int back = 0; back < 3 && kept > 0 && kept < name.size() && continues(kept); ++back) --kept;
     std::string stem = ".";
     stem += name.substr(0, kept);
     stem += '.';
