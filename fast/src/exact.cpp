@@ -183,7 +183,7 @@ void solve_spans(Scale scale, const Corners& v, int bits, const std::array<bool,
 
 // The bands, from each band's first and last rows alone: along the rows an edge's column bound,
 // floor(Q / d) with Q linear in the row, is monotone, so its extremes over the band are at its ends
-// (RowSpans says what each bound means).
+// (edge_limit says what each bound means).
 template <class Int, class Scale>
 std::vector<SpanBand> solve_bands(Scale scale, const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                                   std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
@@ -203,19 +203,14 @@ std::vector<SpanBand> solve_bands(Scale scale, const Corners& v, int bits, const
             for (int k = 0; k < 3; ++k) {
                 const Int& p = top.p[k];
                 const Int d = column_divisor(p);
-                const Int f_top = floor_div(top.q[k], d), f_bottom = floor_div(bottom.q[k], d);
-                if (p == 0) {
-                    some_empty = some_empty || f_top < 0 || f_bottom < 0;
-                    all_empty = all_empty || (f_top < 0 && f_bottom < 0);
-                } else if (p > 0) {
-                    const int a = clamp_to(Int(-f_top), i_lo, i_hi), b = clamp_to(Int(-f_bottom), i_lo, i_hi);
-                    lo_least = std::max(lo_least, std::min(a, b));
-                    lo_most = std::max(lo_most, std::max(a, b));
-                } else {
-                    const int a = clamp_to(f_top, i_lo, i_hi), b = clamp_to(f_bottom, i_lo, i_hi);
-                    hi_least = std::min(hi_least, std::min(a, b));
-                    hi_most = std::min(hi_most, std::max(a, b));
-                }
+                const EdgeLimit a = edge_limit(sign_of(p), floor_div(top.q[k], d), i_lo, i_hi);
+                const EdgeLimit b = edge_limit(sign_of(p), floor_div(bottom.q[k], d), i_lo, i_hi);
+                lo_least = std::max(lo_least, std::min(a.from, b.from));
+                lo_most = std::max(lo_most, std::max(a.from, b.from));
+                hi_least = std::min(hi_least, std::min(a.to, b.to));
+                hi_most = std::min(hi_most, std::max(a.to, b.to));
+                some_empty = some_empty || a.none || b.none;
+                all_empty = all_empty || (a.none && b.none);
             }
             // Each row's lo is at least lo_least and its hi at most hi_most: beyond each other, no row
             // has a sample.

@@ -379,7 +379,7 @@ void RowMasks(const RowEdges& edges, int width, int rows, std::uint64_t* masks) 
     int sign[3];
     for (int k = 0; k < 3; ++k) {
         const std::int64_t p = edges.p[k], d = column_divisor(p);
-        sign[k] = p > 0 ? 1 : p < 0 ? -1 : 0;
+        sign[k] = sign_of(p);
         // Rows 0 to N - 1 for the lanes, then row N for the step of N rows.
         HWY_ALIGN std::int64_t q[HWY_MAX_BYTES / sizeof(std::int64_t)], r[HWY_MAX_BYTES / sizeof(std::int64_t)];
         RowQuotient<std::int64_t> walk(edges.q[k], edges.step[k], d);

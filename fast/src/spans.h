@@ -65,10 +65,31 @@ private:
     Int step_quotient_, step_remainder_;
 };
 
+// -1, 0 or 1 as p is negative, zero or positive.
+template <class Int>
+int sign_of(const Int& p) {
+    return p > 0 ? 1 : p < 0 ? -1 : 0;
+}
+
 // What an edge's column bound divides by: floor(q / |p|) for p != 0; q itself (d = 1) for p = 0.
 template <class Int>
 Int column_divisor(const Int& p) {
     return p > 0 ? p : p < 0 ? Int(-p) : Int(1);
+}
+
+// The columns of a sample row one edge leaves covered, from f = floor(Q / d) (column_divisor): from -f on
+// for p > 0, up to f for p < 0, all or none (f < 0) for p = 0; the ends clamped to [lo - 1, hi + 1], where
+// one past either end already means "no pixel on this side".
+struct EdgeLimit {
+    int from, to;
+    bool none;
+};
+
+template <class Int>
+EdgeLimit edge_limit(int sign, const Int& f, int lo, int hi) {
+    if (sign > 0) return {clamp_to(Int(-f), lo, hi), hi, false};
+    if (sign < 0) return {lo, clamp_to(f, lo, hi), false};
+    return {lo, hi, f < 0};
 }
 
 // Three edge functions along sample rows, E_k = p[k] i + q[k] at pixel column i, q[k] growing by
@@ -81,23 +102,20 @@ public:
     // Columns are clamped to [lo, hi].
     RowSpans(const Int* p, const Int* q, const Int* step, int lo, int hi)
         : lo_(lo), hi_(hi), rows_{row(p[0], q[0], step[0]), row(p[1], q[1], step[1]), row(p[2], q[2], step[2])} {
-        for (int k = 0; k < 3; ++k) sign_[k] = p[k] > 0 ? 1 : p[k] < 0 ? -1 : 0;
+        for (int k = 0; k < 3; ++k) sign_[k] = sign_of(p[k]);
     }
     // The current row's covered columns (empty: lo > hi); the next call gives the next row's.
     Span next() {
         int lo = lo_, hi = hi_;
+        bool none = false;
         for (int k = 0; k < 3; ++k) {
-            const Int& f = rows_[k].value();
-            if (sign_[k] == 0) {
-                if (f < 0) hi = lo - 1;
-            } else if (sign_[k] > 0) {
-                lo = std::max(lo, clamp_to(Int(-f), lo_, hi_));
-            } else {
-                hi = std::min(hi, clamp_to(f, lo_, hi_));
-            }
+            const EdgeLimit limit = edge_limit(sign_[k], rows_[k].value(), lo_, hi_);
+            lo = std::max(lo, limit.from);
+            hi = std::min(hi, limit.to);
+            none = none || limit.none;
             rows_[k].next_row();
         }
-        return {lo, hi};
+        return {lo, none ? lo - 1 : hi};
     }
 
 private:
