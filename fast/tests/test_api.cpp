@@ -228,7 +228,8 @@ TEST(Api, ARendererForgetsTheLastScenesWideSpans) {
     for (const int x : {70, 20}) {
         Scene scene;
         scene.viewport = {200, 60};
-        scene.triangles.push_back({{{{x, -1, 0.5}, {2 * r, 30, 0.5}, {x + 30, 61, 0.5}}}});
+        const double left = x;
+        scene.triangles.push_back({{{{left, -1, 0.5}, {2 * r, 30, 0.5}, {left + 30, 61, 0.5}}}});
         renderer.render(scene, target);
         EXPECT_EQ(target.id(x + 14, 30), Framebuffer::kNoTriangle) << x;
         EXPECT_EQ(target.id(x + 15, 30), 0) << x;
