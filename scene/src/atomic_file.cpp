@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -112,18 +113,28 @@ Temporary staged(const std::filesystem::path& target, std::string_view bytes) {
     return temp;
 }
 
-// The rename of `target` is durable only once its directory entry is.
-void sync_directory_of(const std::filesystem::path& target) {
-    const std::filesystem::path dir = directory_of(target);
-    const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    const int error = dir_fd < 0 ? errno : (::fsync(dir_fd) != 0 ? errno : 0);
-    if (dir_fd >= 0) ::close(dir_fd);
-    if (error == 0) return;
-    std::string what = "'";  // appended, as the temporary's name is, for GCC 12's -Wrestrict
-    what += target.string();
-    what += "' was replaced, but fsync of its directory '" + dir.string() +
-            "' failed, so the change might not survive a crash";
-    fail(error, what);
+// A failed fsync of a replaced file's directory: the file is in place, but its rename might not survive
+// a crash.
+struct UnsyncedDirectory {
+    int error;
+    std::filesystem::path target, dir;
+};
+
+// Renames are durable only once their directory entries are: fsyncs the directory of each of `files`,
+// each distinct one once, all of them even after one fails. Answers the first failure.
+std::optional<UnsyncedDirectory> sync_directories(std::span<const FileContent> files) {
+    std::optional<UnsyncedDirectory> failure;
+    std::vector<std::filesystem::path> synced;
+    for (const auto& file : files) {
+        std::filesystem::path dir = directory_of(file.first);
+        if (std::find(synced.begin(), synced.end(), dir) != synced.end()) continue;
+        const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        const int error = dir_fd < 0 ? errno : (::fsync(dir_fd) != 0 ? errno : 0);
+        if (dir_fd >= 0) ::close(dir_fd);
+        if (error != 0 && !failure) failure = UnsyncedDirectory{error, file.first, dir};
+        synced.push_back(std::move(dir));
+    }
+    return failure;
 }
 
 }  // namespace
@@ -140,13 +151,8 @@ void write_files_atomic(std::span<const FileContent> files) {
             const std::string step = "cannot rename the temporary file '" + temps[k].path() + "' over it";
             if (replaced.empty()) cannot_write(error, target, step);
             // The files already replaced stay so: their renames are made as durable as they can be first,
-            // and this error, not one of those, is the one reported.
-            for (std::size_t j = 0; j < k; ++j) {
-                try {
-                    sync_directory_of(files[j].first);
-                } catch (const std::system_error&) {
-                }
-            }
+            // and this error, not one of theirs, is the one reported.
+            sync_directories(files.first(k));
             fail(error, "cannot write '" + target.string() + "': " + step + "; already replaced: " + replaced);
         }
         temps[k].committed();
@@ -154,7 +160,13 @@ void write_files_atomic(std::span<const FileContent> files) {
         replaced += target.string();
         replaced += '\'';
     }
-    for (const auto& file : files) sync_directory_of(file.first);
+    if (const auto unsynced = sync_directories(files)) {
+        std::string what = "'";  // appended, as the temporary's name is, for GCC 12's -Wrestrict
+        what += unsynced->target.string();
+        what += "' was replaced, but fsync of its directory '" + unsynced->dir.string() +
+                "' failed, so the change might not survive a crash";
+        fail(unsynced->error, what);
+    }
 }
 
 void write_file_atomic(const std::filesystem::path& target, std::string_view bytes) {
