@@ -174,7 +174,7 @@ template <bool kPerSample>
 struct DepthLanes {
     explicit DepthLanes(const DepthPlane& p)
         : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), b(hn::Set(D(), p.b)),
-          y0(hn::Set(D(), p.y0)), e(hn::Set(D(), p.err)), stored_e(hn::Set(D(), p.stored_err)),
+          y0(hn::Set(D(), p.y0)), e(hn::Set(D(), p.err)), margin(hn::Set(D(), p.err + p.stored_err)),
           id(hn::Set(DI(), p.id)) {}
     // b (py - y0), the scalar definition's, lane by lane: a row's term of the plane.
     HWY_INLINE VD b_dy(VD py) const { return hn::Mul(b, hn::Sub(py, y0)); }
@@ -194,16 +194,20 @@ struct DepthLanes {
         const DI di;
         const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
         const auto stored = hn::LoadU(d, row.z + k);
-        VD stored_err = stored_e;
-        if constexpr (kPerSample) stored_err = hn::LoadU(d, row.err + k);
-        const auto write = hn::And(mask, hn::Lt(hn::Add(depth, e), hn::Sub(stored, stored_err)));
-        const auto farther = hn::Gt(hn::Sub(depth, e), hn::Add(stored, stored_err));
+        VD both = margin, stored_err = hn::Zero(d);  // the stored bounds, read where rows keeps them
+        if constexpr (kPerSample) {
+            stored_err = hn::LoadU(d, row.err + k);
+            both = hn::Add(e, stored_err);
+        }
+        const auto gap = hn::Sub(stored, depth);
+        const auto write = hn::And(mask, hn::Gt(gap, both));
+        const auto farther = hn::Lt(gap, hn::Neg(both));
         hn::StoreU(hn::IfThenElse(write, depth, stored), d, row.z + k);
         if constexpr (kPerSample) hn::StoreU(hn::IfThenElse(write, e, stored_err), d, row.err + k);
         hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, row.ids + k)), di, row.ids + k);
         return hn::AndNot(hn::Or(write, farther), mask);
     }
-    VD z0, a, x0, b, y0, e, stored_e;
+    VD z0, a, x0, b, y0, e, margin;  // margin: err + stored_err
     hn::Vec<DI> id;
 };
 

@@ -58,7 +58,7 @@ struct DepthPlane {
 // nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel reads and rewrites (with their own
 // values) up to a vector past the end of a row: the buffers need that much padding. An empty slot
 // (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while its bound is
-// finite (an infinite one makes z - err NaN, which decides nothing).
+// finite (the gap, +infinity, is not beyond an infinite margin: that decides nothing).
 struct DepthRows {
     double* z;
     double* err;
@@ -93,9 +93,13 @@ void row_masks(const RowEdges& edges, int width, int rows, std::uint64_t* masks)
 // covered[r]: the covered samples of row r.
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered);
 
-// For every covered sample: written (z, id, and err where DepthRows keeps bounds) when z + err < z' - err'
-// (decided nearer); left when z - err > z' + err' (decided farther), err' the stored depth's bound.
-// undecided[r] gets the rest of row r, for the exact comparison; returns whether there are any.
+// For every covered sample, with the gap z' - z to the stored depth z' and the margin err + err', err' the
+// stored depth's bound: written (z, id, and err where DepthRows keeps bounds) when gap > margin (decided
+// nearer); left when gap < -margin (decided farther). Each bound is four times the distance from the
+// exact depth, so either decision, rounding of the gap and margin included, holds for the exact depths:
+// a rounded gap beyond the rounded margin leaves more than (1 - 2u) of it, and the two depths' errors
+// take at most a quarter. undecided[r] gets the rest of row r, for the exact comparison; returns whether
+// there are any.
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 

@@ -68,11 +68,12 @@ template <bool kPerSample, class RowMask>
             const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
             const std::ptrdiff_t at = r * rows.stride + k;
             const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
-            if (z + p.err < stored - stored_err) {
+            const double gap = stored - z, margin = p.err + stored_err;
+            if (gap > margin) {
                 rows.z[at] = z;
                 if constexpr (kPerSample) rows.err[at] = p.err;
                 rows.ids[at] = p.id;
-            } else if (!(z - p.err > stored + stored_err)) {
+            } else if (!(gap < -margin)) {
                 open |= std::uint64_t{1} << k;
             }
         }

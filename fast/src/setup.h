@@ -81,7 +81,7 @@ struct FloatEdge {
 };
 
 // z(p) = z0 + (a (px - x0) + b (py - y0)) in double; err bounds 4x its distance from the exact plane over
-// the bounding box (the factor covers rounding z +- err in the depth test).
+// the bounding box (the factor covers the rounding of the depth test, depth_block in kernels.h).
 struct Plane {
     double x0, y0, z0, a, b, err;
 };
