@@ -57,8 +57,8 @@ struct DepthPlane {
 // A tile's z-buffer at the block's first sample, rows `stride` apart: depths, their error bounds (or
 // nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel reads and rewrites (with their own
 // values) up to a vector past the end of a row: the buffers need that much padding. An empty slot
-// (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while its bound is
-// finite (the gap, +infinity, is not beyond an infinite margin: that decides nothing).
+// (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while the margin
+// (depth_block) is finite (the gap, +infinity, is not beyond an infinite margin: that decides nothing).
 struct DepthRows {
     double* z;
     double* err;
@@ -95,8 +95,8 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 
 // For every covered sample, with the gap z' - z to the stored depth z' and the margin err + err', err' the
 // stored depth's bound: written (z, id, and err where DepthRows keeps bounds) when gap > margin (decided
-// nearer); left when gap < -margin (decided farther). Each bound is four times the distance from the
-// exact depth, so either decision, rounding of the gap and margin included, holds for the exact depths:
+// nearer); left when gap < -margin (decided farther). Each bound is at least four times the distance from
+// the exact depth, so either decision, rounding of the gap and margin included, holds for the exact depths:
 // a rounded gap beyond the rounded margin leaves more than (1 - 2u) of it, and the two depths' errors
 // take at most a quarter. undecided[r] gets the rest of row r, for the exact comparison; returns whether
 // there are any.

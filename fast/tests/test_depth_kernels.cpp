@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <utility>
@@ -179,6 +181,63 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
         // The cases are not all trivial: many blocks write, many leave samples to the exact comparison.
         EXPECT_GT(written_blocks, 1500) << undecided_blocks;
         EXPECT_GT(undecided_blocks, 1500) << written_blocks;
+    }
+}
+
+// The decision itself, by hand: stored depths z' = z + f (err + err') around the plane's z, for a block
+// every sample of which is covered. A gap beyond the margin on either side is decided (written when the
+// stored depth is the farther), one within it is left to the exact comparison: a margin scaled either way
+// fails, in the scalar test and in every kernel on every target.
+TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
+    constexpr double kFactors[] = {-3, -1.5, -1.1, -0.9, -0.5, 0, 0.5, 0.9, 1.1, 1.5, 3};
+    constexpr int kCount = static_cast<int>(std::size(kFactors));
+    const Block b{40, 7, kCount, 3, 0.5, 0.5};
+    const DepthPlane p{0.5, 1e-3, 40, -2e-3, 7, 1e-12, 2e-12, 7};
+    const double margin = p.err + p.stored_err;
+    for (const bool per_sample : {false, true}) {
+        Rows start;
+        const std::size_t size = static_cast<std::size_t>(Rows::kStride) * b.rows + kRowLanes;
+        start.z.assign(size, std::numeric_limits<double>::infinity());
+        start.err.assign(size, 0);
+        start.ids.assign(size, -1);
+        start.per_sample = per_sample;
+        for (int r = 0; r < b.rows; ++r)
+            for (int k = 0; k < kCount; ++k) {
+                const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
+                const double px = double(b.i0 + k) + b.sx, py = double(b.j0 + r) + b.sy;
+                start.z[at] = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0)) + kFactors[k] * margin;
+                start.err[at] = per_sample ? p.stored_err : 0;
+                start.ids[at] = 100 + k;
+            }
+        const auto expect_decisions = [&](Rows& rows, const std::uint64_t* open, const char* what) {
+            SCOPED_TRACE(what);
+            for (int r = 0; r < b.rows; ++r)
+                for (int k = 0; k < kCount; ++k) {
+                    const double f = kFactors[k];
+                    const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
+                    EXPECT_EQ(rows.ids[at], f > 1 ? p.id : 100 + k) << "f = " << f;
+                    EXPECT_EQ((open[r] >> k) & 1, std::abs(f) < 1 ? 1u : 0u) << "f = " << f;
+                }
+        };
+        std::uint64_t open[kRowLanes];
+        Rows scalar = start;
+        EXPECT_TRUE(depth_block_scalar(b, Coverage{}, p, scalar.view(), open));
+        expect_decisions(scalar, open, "scalar");
+        for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+            hwy::SetSupportedTargetsForTest(target);
+            SCOPED_TRACE(hwy::TargetName(target));
+            Rows block = start, runs = start, lanes = start;
+            EXPECT_TRUE(depth_block(b, Coverage{}, p, block.view(), open));
+            expect_decisions(block, open, "depth_block");
+            std::uint64_t covered[kRowLanes];
+            for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(kCount);
+            EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), open));
+            expect_decisions(runs, open, "depth_runs");
+            const SmallEdges inside{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}};
+            EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), open));
+            expect_decisions(lanes, open, "depth_small");
+        }
+        hwy::SetSupportedTargetsForTest(0);
     }
 }
 
