@@ -140,16 +140,23 @@ void write_into_unreadable_directory(std::span<const FileContent> files, const s
     std::_Exit(1);
 }
 
+// Two such folders: the first one's failure is the one reported.
 TEST_F(AtomicFile, DirectoryThatCannotBeSyncedIsReportedAfterTheFilesAreInPlace) {
-    write_file_atomic(dir_ / "a.txt", "old");
-    write_and_enter_only(dir_);
-    const FileContent files[] = {{dir_ / "a.txt", "new"}, {dir_ / "b.txt", "other"}};
+    const fs::path one = dir_ / "one", two = dir_ / "two";
+    fs::create_directories(one);
+    fs::create_directories(two);
+    write_file_atomic(one / "a.txt", "old");
+    write_and_enter_only(one);
+    write_and_enter_only(two);
+    const FileContent files[] = {{one / "a.txt", "new"}, {two / "b.txt", "other"}, {one / "c.txt", "third"}};
     std::string expected = "'";  // appended: GCC 12 warns falsely (-Wrestrict) on "'" + std::string
-    expected += (dir_ / "a.txt").string() + "' was replaced, but fsync of its directory '" + dir_.string() +
+    expected += (one / "a.txt").string() + "' was replaced, but fsync of its directory '" + one.string() +
                 "' failed, so the change might not survive a crash: Permission denied";
     EXPECT_EXIT(write_into_unreadable_directory(files, expected), ::testing::ExitedWithCode(0), "");
-    EXPECT_EQ(slurp(dir_ / "a.txt"), "new");
-    EXPECT_EQ(slurp(dir_ / "b.txt"), "other");
+    for (const fs::path& folder : {one, two}) fs::permissions(folder, fs::perms::owner_all, fs::perm_options::add);
+    EXPECT_EQ(slurp(one / "a.txt"), "new");
+    EXPECT_EQ(slurp(two / "b.txt"), "other");
+    EXPECT_EQ(slurp(one / "c.txt"), "third");
 }
 
 // A rename that fails after another succeeded is the error reported, not the fsync of the directory of
