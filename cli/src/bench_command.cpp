@@ -2,6 +2,7 @@
 // error against the exact reference, hard cases, and the antialiasing error of the sample patterns.
 #include "commands.h"
 #include "output_paths.h"
+#include "shell_word.h"
 
 #include <rast/atomic_file.h>
 #include <rast/bench_run.h>
@@ -32,11 +33,11 @@ std::string command_line(const BenchOptions& o) {
     std::string command = "rast bench";
     if (o.quick) command += " --quick";
     for (const std::string& section : o.only) command += " --only " + section;
-    if (o.mesh != RAST_DEFAULT_MESH) command += " --mesh " + o.mesh;
-    if (o.json_out) command += " --json " + *o.json_out;
-    if (o.plot_out) command += " --plot " + *o.plot_out;
-    if (o.markdown_out) command += " --markdown " + *o.markdown_out;
-    for (const std::string& note : o.notes) command += " --note '" + note + "'";
+    if (o.mesh != RAST_DEFAULT_MESH) command += " --mesh " + shell_word(o.mesh);
+    if (o.json_out) command += " --json " + shell_word(*o.json_out);
+    if (o.plot_out) command += " --plot " + shell_word(*o.plot_out);
+    if (o.markdown_out) command += " --markdown " + shell_word(*o.markdown_out);
+    for (const std::string& note : o.notes) command += " --note " + shell_word(note);
     return command;
 }
 

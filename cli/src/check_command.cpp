@@ -7,6 +7,7 @@
 #include "engine_choice.h"
 #include "output_paths.h"
 #include "scene_input.h"
+#include "shell_word.h"
 
 #include <rast/exact_geometry.h>
 #include <rast/mesh.h>
@@ -184,7 +185,7 @@ bool cut_by_near_plane(const Scene& scene) {
 }
 
 std::string command_line(const CheckOptions& o) {
-    std::string text = "rast check " + o.input.path + o.input.options() + " --engine " + o.engine.engine;
+    std::string text = "rast check " + shell_word(o.input.path) + o.input.options() + " --engine " + o.engine.engine;
     if (!o.engine.is_reference()) text += " --precision " + o.engine.precision;
     return text;
 }

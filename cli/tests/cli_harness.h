@@ -2,6 +2,8 @@
 // directory per test.
 #pragma once
 
+#include "../src/shell_word.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -34,11 +36,9 @@ inline Result run(const std::string& command) {
 
 inline Result rast(const std::string& args) { return run(std::string(RAST_BINARY) + " " + args + " 2>&1"); }
 
-// rast with `text` piped into its standard input, as `cat scene.tri | rast ...` does. The text is quoted
-// for the shell as it is: it must not hold a single quote.
+// rast with `text` piped into its standard input, as `cat scene.tri | rast ...` does.
 inline Result rast_piped(const std::string& text, const std::string& args) {
-    if (text.find('\'') != std::string::npos) throw std::invalid_argument("rast_piped: a single quote in the text");
-    return run("printf '%s' '" + text + "' | " + RAST_BINARY + " " + args + " 2>&1");
+    return run("printf '%s' " + shell_word(text) + " | " + RAST_BINARY + " " + args + " 2>&1");
 }
 
 inline std::string slurp(const std::filesystem::path& file) {

@@ -343,6 +343,20 @@ TEST_F(Cli, BenchRefusesAMeshNoChosenSectionRenders) {
     EXPECT_FALSE(std::filesystem::exists(dir / "a.json"));
 }
 
+// What rast writes as a command to type again: each word read back by the shell as it was.
+TEST(ShellWord, EveryWordReadsBackFromTheShellAsItWas) {
+    using rast::cli::shell_word;
+    EXPECT_EQ(shell_word("corpus/fans/a-b_c.tri"), "corpus/fans/a-b_c.tri");  // nothing to quote
+    EXPECT_EQ(shell_word("it's"), "'it'\\''s'");
+    EXPECT_EQ(shell_word(""), "''");
+    for (const std::string word : {"plain", "a b", "it's", "'", "''", "", "$HOME", "`id`", "$(id)", "a\\b", "x;y",
+                                   "*", "~", "\"q\"", "tab\there", "new\nline", "-n", "été", "!1", "#x", "a=b c"}) {
+        const Result r = rast::cli::testing::run("printf '%s' " + shell_word(word));
+        EXPECT_EQ(r.status, 0) << word;
+        EXPECT_EQ(r.out, word) << shell_word(word);
+    }
+}
+
 TEST_F(Cli, HelpExplainsEveryOption) {
     const Result r = rast("render --help");
     EXPECT_EQ(r.status, 0);

@@ -92,14 +92,22 @@ TEST_F(CorpusCommands, CheckReportsSamplesCoveredTwiceAcrossASharedEdgeAndKeepsT
         << replayed.out;
 }
 
-// The case's reproduce line carries the options that made the scene: without --samples 4 it checked one
-// sample per pixel, and found other samples.
+// The case's reproduce line carries the options that made the scene (without --samples 4 it checked one
+// sample per pixel, and found other samples) and the scene's path quoted for the shell, and it runs again
+// to the same finding.
 TEST_F(CorpusCommands, TheKeptCaseNamesTheCommandThatReproducesIt) {
-    const std::string scene = file("fold.tri", kFold);
-    const Result r = rast("check " + scene + " --samples 4 --corpus-out " + (dir / "found").string());
-    EXPECT_EQ(r.status, 1) << r.out;
-    EXPECT_TRUE(contains(slurp(dir / "found" / "check-fold-reference.tri"),
-                         "# reproduce: rast check " + scene + " --samples 4 --engine reference\n"));
+    const std::string scene = file("it's a fold.tri", kFold);
+    const Result r = rast("check '" + (dir / "it").string() + "'\\''s a fold.tri' --samples 4 --corpus-out " +
+                          (dir / "found").string());
+    ASSERT_EQ(r.status, 1) << r.out;
+    const std::string command = "rast check '" + (dir / "it").string() + "'\\''s a fold.tri' --samples 4 --engine reference";
+    const std::string kept = slurp(dir / "found" / "check-it's a fold-reference.tri");
+    ASSERT_TRUE(contains(kept, "# reproduce: " + command + "\n")) << kept;
+    const Result again = rast(command.substr(std::string("rast ").size()) + " --corpus-out " + (dir / "again").string());
+    EXPECT_EQ(again.status, 1) << again.out;
+    const std::string findings = r.out.substr(0, r.out.find("violating samples\n"));
+    EXPECT_EQ(again.out.substr(0, findings.size()), findings) << again.out;
+    EXPECT_TRUE(contains(findings, "covered 2 times")) << r.out;
 }
 
 // Every sample of a 4x4 viewport under a big triangle 0 that shares no edge. On it, three folds: A = 1 and B = 2
