@@ -175,7 +175,7 @@ void solve_spans(Scale scale, const Corners& v, int bits, const std::array<bool,
     const std::array<Edge<Int>, 3> edges = edges_of<Int>(scale, v, inclusive);
     const std::size_t samples = offsets.size();
     for (std::size_t s = 0; s < samples; ++s) {
-        RowLines<Int> lines = row_lines(edges, scale, bits, offsets[s], j_lo);
+        const RowLines<Int> lines = row_lines(edges, scale, bits, offsets[s], j_lo);
         RowSpans<Int> walk(lines.p.data(), lines.q.data(), lines.step.data(), i_lo, i_hi);
         for (int j = j_lo; j <= j_hi; ++j) spans[static_cast<std::size_t>(j - j_lo) * samples + s] = walk.next();
     }

@@ -130,6 +130,15 @@ bool owns_ties(T ax, T ay, T bx, T by) {
     return (by < ay) | ((by == ay) & (bx < ax));
 }
 
+// Which edges of a counter-clockwise triangle own the samples exactly on them, edge k being v[k] -> v[k+1]
+// (the fixed path's integer bias says it itself).
+template <Fault F>
+std::array<bool, 3> owning_edges(const Corners& v) {
+    std::array<bool, 3> owns;
+    for (int k = 0; k < 3; ++k) owns[k] = owns_ties<F>(v[k].x, v[k].y, v[(k + 1) % 3].x, v[(k + 1) % 3].y);
+    return owns;
+}
+
 // The integer edge functions of a counter-clockwise triangle with corners (x[k], y[k]) in fixed units:
 // E >= 0 on an owning edge, E > 0 (E - 1 >= 0 for integers) on the others. Scaling by 2^bits is exact
 // and monotone, so the integers own the same edges as the coordinates they scale.
@@ -348,17 +357,11 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
     s.p = placed;
     s.classify_tiles = classify_tiles;
     const Corners& v = placed.v;
-    // Which edges own the samples exactly on them (the fixed path's integer bias says it itself).
-    const auto owning_edges = [&v] {
-        std::array<bool, 3> owns;
-        for (int k = 0; k < 3; ++k) owns[k] = owns_ties<F>(v[k].x, v[k].y, v[(k + 1) % 3].x, v[(k + 1) % 3].y);
-        return owns;
-    };
 
     switch (placed.path) {
         case Path::floating: {
             const bool single = c.precision == Precision::float32;
-            const std::array<bool, 3> inclusive = owning_edges();
+            const std::array<bool, 3> inclusive = owning_edges<F>(v);
             const auto in_type = [single](double x) { return single ? double(float(x)) : x; };
             for (int k = 0; k < 3; ++k) {
                 const Vertex& p = v[k];
@@ -382,7 +385,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
             break;
         }
         case Path::wide:
-            s.owns = owning_edges();
+            s.owns = owning_edges<F>(v);
             if (classify_tiles)
                 s.bands = wide_bands(v, c.bits, s.owns, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi, kTile);
             break;

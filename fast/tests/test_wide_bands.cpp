@@ -48,9 +48,7 @@ TEST(WideBands, HoldEverySpanOfTheirRowsAndTheAcceptBoundsExactly) {
                 const std::optional<Placed> placed = place<Fault::none>(Triangle{v}, c);
                 if (!placed) continue;
                 const Placed& p = *placed;
-                std::array<bool, 3> owns;
-                for (int k = 0; k < 3; ++k)
-                    owns[k] = owns_ties<Fault::none>(p.v[k].x, p.v[k].y, p.v[(k + 1) % 3].x, p.v[(k + 1) % 3].y);
+                const std::array<bool, 3> owns = owning_edges<Fault::none>(p.v);
                 const std::vector<SpanBand> bands =
                     wide_bands(p.v, c.bits, owns, c.offsets, p.i_lo, p.i_hi, p.j_lo, p.j_hi, kTile);
                 ASSERT_EQ(bands.size(), static_cast<std::size_t>(p.j_hi / kTile - p.j_lo / kTile + 1));
