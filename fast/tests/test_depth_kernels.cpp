@@ -32,17 +32,23 @@ struct Rows {
     }
 };
 
-// Stored depths around the plane's at the block's samples: some empty, some equal to it (undecided
-// within the bounds), most clearly nearer or farther.
-Rows random_rows(std::mt19937_64& rng, const Block& b, const DepthPlane& p, bool per_sample, bool at_right_edge) {
+// Block b's rows, every slot empty, the block's first sample at `origin`: the block's rows end the
+// buffer's, then the padding.
+Rows empty_rows(const Block& b, bool per_sample, std::ptrdiff_t origin) {
     Rows rows;
-    rows.origin = at_right_edge ? Rows::kStride - b.width : 0;
-    // The block's rows end the buffer's, then the padding.
+    rows.origin = origin;
     const std::size_t size = static_cast<std::size_t>(Rows::kStride) * b.rows + kRowLanes;
     rows.z.assign(size, std::numeric_limits<double>::infinity());
     rows.err.assign(size, 0);
     rows.ids.assign(size, -1);
     rows.per_sample = per_sample;
+    return rows;
+}
+
+// Stored depths around the plane's at the block's samples: some empty, some equal to it (undecided
+// within the bounds), most clearly nearer or farther.
+Rows random_rows(std::mt19937_64& rng, const Block& b, const DepthPlane& p, bool per_sample, bool at_right_edge) {
+    Rows rows = empty_rows(b, per_sample, at_right_edge ? Rows::kStride - b.width : 0);
     std::uniform_int_distribution<int> kind(0, 9);
     std::uniform_real_distribution<double> offset(-0.01, 0.01);
     for (int r = 0; r < b.rows; ++r)
@@ -195,12 +201,7 @@ TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
     const DepthPlane p{0.5, 1e-3, 40, -2e-3, 7, 1e-12, 2e-12, 7};
     const double margin = p.err + p.stored_err;
     for (const bool per_sample : {false, true}) {
-        Rows start;
-        const std::size_t size = static_cast<std::size_t>(Rows::kStride) * b.rows + kRowLanes;
-        start.z.assign(size, std::numeric_limits<double>::infinity());
-        start.err.assign(size, 0);
-        start.ids.assign(size, -1);
-        start.per_sample = per_sample;
+        Rows start = empty_rows(b, per_sample, 0);
         for (int r = 0; r < b.rows; ++r)
             for (int k = 0; k < kCount; ++k) {
                 const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
