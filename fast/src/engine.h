@@ -366,13 +366,14 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
     }
 }
 
-// What every path shares: triangle `id` (placed as p, its depth plane) into the tile's z-buffer over
-// pixels [i0, i1] x [j0, j1] of its bounding box, behind hierarchical z, one block per sample index.
-// depth(b, s, plane, rows, undecided) runs the z-buffer test on block b of sample index s and answers
-// whether it left samples undecided; those get the exact order. Always inlined: as a call of its own, its
-// eleven arguments and the plane went through the stack, a tenth of a small triangle's setup.
-template <Fault F, class BlockDepth>
-[[gnu::always_inline]] inline void rasterize_blocks(const Placed& p, const Plane& pl, std::int32_t id, int i0,
+// What every path shares: triangle `id` (its depth plane; corners() answers its placed corners, which
+// only the exact order reads) into the tile's z-buffer over pixels [i0, i1] x [j0, j1] of its bounding
+// box, behind hierarchical z, one block per sample index. depth(b, s, plane, rows, undecided) runs the
+// z-buffer test on block b of sample index s and answers whether it left samples undecided; those get
+// the exact order. Always inlined: as a call of its own, its eleven arguments and the plane went through
+// the stack, a tenth of a small triangle's setup.
+template <Fault F, class CornersOf, class BlockDepth>
+[[gnu::always_inline]] inline void rasterize_blocks(CornersOf corners, const Plane& pl, std::int32_t id, int i0,
                                                     int i1, int j0, int j1, const TileRect& rect, TileBuffer& tile,
                                                     const SceneView& scene, BlockDepth depth) {
     const Context& c = scene.c;
@@ -389,7 +390,7 @@ template <Fault F, class BlockDepth>
         const DepthRows rows = tile.rows_at(at);
         if (!depth(b, s, plane, rows, undecided)) continue;
         for (int r = 0; r < b.rows; ++r)
-            if (undecided[r] != 0) resolve<F>(p.v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
+            if (undecided[r] != 0) resolve<F>(corners(), plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
     }
 }
 
@@ -416,7 +417,7 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     if (cls == TileClass::reject) return;
     std::span<const Span> wide;  // a partial tile's, found at the first sample index, past hierarchical z
     std::uint64_t masks[kTile];
-    rasterize_blocks<F>(t.p, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
+    rasterize_blocks<F>([&t]() -> const Corners& { return t.p.v; }, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             const bool scalar = b.width * b.rows <= kScalarSamples;
                             const bool partial = cls == TileClass::partial;
@@ -436,17 +437,16 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
                         });
 }
 
-// A small triangle of the 64-bit fixed path, straight from its binned record: its edges and plane are
-// all it needs, and a narrow one's edges fit the 32-bit lanes of depth_small.
+// A small triangle of the 64-bit fixed path, straight from its binned record and its plane: its edges
+// are all else it needs, and a narrow one's edges fit the 32-bit lanes of depth_small.
 template <Fault F>
-void rasterize_small(const SmallFixed& t, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
+void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const TileRect& rect, TileBuffer& tile,
+                     const SceneView& scene) {
     const Context& c = scene.c;
-    const Placed p = placed_of(t, c);
-    const int i0 = std::max(rect.i0, p.i_lo), i1 = std::min(rect.i1, p.i_hi);
-    const int j0 = std::max(rect.j0, p.j_lo), j1 = std::min(rect.j1, p.j_hi);
+    const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
+    const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
     const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
-    const bool narrow = narrow_edges(t, std::int64_t{1} << c.bits);
-    rasterize_blocks<F>(p, narrow ? make_plane_narrow(p, c) : make_plane(p, c), t.id, i0, i1, j0, j1, rect, tile, scene,
+    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
                                 return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
@@ -594,13 +594,22 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         const std::vector<SmallTriangle>& small = chunk.small_bins[index];
         const std::vector<BigEntry>& big = chunk.big_bins[index];
         // The three lists are in id order; merged, the tile composes all its triangles in id order. The
-        // common lane's triangles before the next of the other two go in one tight loop.
+        // common lane's triangles before the next of the other two go in one tight loop, their planes set
+        // up kPlaneBatch at a time.
         for (std::size_t f = 0, a = 0, b = 0;;) {
             const std::int32_t next_small = a < small.size() ? small[a].id : kEnd;
             const std::int32_t next_big = b < big.size() ? big[b].id : kEnd;
             const std::int32_t next_other = std::min(next_small, next_big);
-            for (; f < fixed.size() && fixed[f].id < next_other; ++f)
-                rasterize_small<F>(fixed[f], rect, tile, scene);
+            while (f < fixed.size() && fixed[f].id < next_other) {
+                std::size_t n = 1;
+                while (n < kPlaneBatch && f + n < fixed.size() && fixed[f + n].id < next_other) ++n;
+                Plane planes[kPlaneBatch];
+                bool narrow[kPlaneBatch];
+                small_planes({fixed.data() + f, n}, scene.c, planes, narrow);
+                for (std::size_t k = 0; k < n; ++k)
+                    rasterize_small<F>(fixed[f + k], planes[k], narrow[k], rect, tile, scene);
+                f += n;
+            }
             if (next_other == kEnd) break;
             if (next_small < next_big) {
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);

@@ -5,6 +5,7 @@
 #include "bounded.h"
 #include "exact.h"
 #include "kernels.h"
+#include "planes.h"
 #include "snap.h"
 #include "spans.h"
 
@@ -213,31 +214,6 @@ inline Plane make_plane(const Placed& s, const Context& c) {
     return plane_over_box(s, c, a, b);
 }
 
-// make_plane for a triangle on the fixed grid whose corners lie within 2^15 grid units of each other
-// (narrow_edges): their differences, and the cross product of two (integers below 2^31 times a power
-// of two), are exact in double, so the same operations give the same gradient, and its bounds, which
-// are mul, sub and div's (bounded.h) with those inputs' errors zero, come from the depths alone: the
-// plane costs a third fewer instructions.
-inline Plane make_plane_narrow(const Placed& s, const Context& c) {
-    const Corners& v = s.v;
-    const double u = kUnitDouble;
-    const double dx1 = v[1].x - v[0].x, dy1 = v[1].y - v[0].y, dx2 = v[2].x - v[0].x, dy2 = v[2].y - v[0].y;
-    const double det = dx1 * dy2 - dx2 * dy1;
-    const double dz1 = v[1].z - v[0].z, dz2 = v[2].z - v[0].z;
-    const Bounded z1 = {dz1, u * std::abs(dz1)}, z2 = {dz2, u * std::abs(dz2)};  // sub's bounds
-    // (z p - w q) / det: make_plane's a = (dz1 dy2 - dz2 dy1) / det and b = (dx1 dz2 - dx2 dz1) / det, the
-    // products in either order (a product of doubles does not depend on it). Not b as -(dz1 dx2 - dz2 dx1):
-    // on a flat plane that is -0, where make_plane's is +0.
-    const auto slope = [&](Bounded z, double p, Bounded w, double q) {
-        const double m1 = z.v * p, m2 = w.v * q, n = m1 - m2;
-        const double en = std::abs(p) * z.e + std::abs(q) * w.e + u * (std::abs(m1) + std::abs(m2) + std::abs(n)) +
-                          2 * DBL_TRUE_MIN;
-        const double g = n / det;
-        return Bounded{g, en / std::abs(det) + u * std::abs(g) + DBL_TRUE_MIN};
-    };
-    return plane_over_box(s, c, slope(z1, dy2, z2, dy1), slope(z2, dx1, z1, dx2));
-}
-
 // Snapping, winding, bounding box and path: nothing when the triangle covers no sample of the viewport.
 template <Fault F>
 std::optional<Placed> place(const Triangle& t, const Context& c) {
@@ -339,6 +315,37 @@ inline Placed placed_of(const SmallFixed& s, const Context& c) {
     Placed p{{}, s.i_lo, s.i_hi, s.j_lo, s.j_hi, Path::fixed};
     for (int k = 0; k < 3; ++k) p.v[k] = {s.x[k] * c.unit, s.y[k] * c.unit, s.z[k]};
     return p;
+}
+
+// The depth planes of a run of 1 to kPlaneBatch small triangles, and which of them are narrow
+// (narrow_edges): the narrow ones' set up together (narrow_planes), the others' by make_plane.
+inline void small_planes(std::span<const SmallFixed> run, const Context& c, Plane* planes, bool* narrow) {
+    bool any = false;
+    for (std::size_t k = 0; k < run.size(); ++k) {
+        narrow[k] = narrow_edges(run[k], std::int64_t{1} << c.bits);
+        any = any || narrow[k];
+    }
+    PlaneBatch batch;
+    if (any) {
+        for (std::size_t k = 0; k < kPlaneBatch; ++k) {
+            const SmallFixed& t = run[k < run.size() ? k : 0];  // lanes past the run repeat its first
+            for (int corner = 0; corner < 3; ++corner) {
+                batch.x[corner][k] = t.x[corner];
+                batch.y[corner][k] = t.y[corner];
+                batch.z[corner][k] = t.z[corner];
+            }
+            batch.i_lo[k] = t.i_lo;
+            batch.i_hi[k] = t.i_hi;
+            batch.j_lo[k] = t.j_lo;
+            batch.j_hi[k] = t.j_hi;
+        }
+        narrow_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
+    }
+    for (std::size_t k = 0; k < run.size(); ++k) {
+        const SmallFixed& t = run[k];
+        planes[k] = narrow[k] ? Plane{t.x[0] * c.unit, t.y[0] * c.unit, t.z[0], batch.a[k], batch.b[k], batch.err[k]}
+                              : make_plane(placed_of(t, c), c);
+    }
 }
 
 // The float modes' tile margin: the mode's edge error bound plus that of the double evaluation the tile

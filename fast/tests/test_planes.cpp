@@ -1,15 +1,18 @@
 // The depth planes of setup.h. Their error bound against exact rational arithmetic (GMP): at every sample
 // of the bounding box, the double evaluation the kernels make is within a quarter of err of the exact
-// plane through the corners. And make_plane_narrow, the small lane's shortcut, against make_plane: on a
-// narrow triangle it takes the same rounded operations for the gradient, so that comes out with the same
-// bits, and it leaves out only error terms that are zero there, so its bound is no larger. Triangles from
-// the small lane's own records in every fixed mode, and placed ones of every path, with depths of every
-// magnitude and sign, flat planes and near-degenerate corners.
+// plane through the corners. And small_planes, the small lane's planes set up several at once, against
+// make_plane: on a narrow triangle the lanes take the same rounded operations for the gradient, so that
+// comes out with the same bits, and leave out only error terms that are zero there, so the bound is no
+// larger; every SIMD target gives the same bits. Triangles from the small lane's own records in every
+// fixed mode, and placed ones of every path, with depths of every magnitude and sign, flat planes and
+// near-degenerate corners.
 #include "setup.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cfloat>
@@ -18,6 +21,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <vector>
 
 namespace rast::fast::detail {
 namespace {
@@ -96,33 +100,69 @@ void expect_bounded_over_box(std::mt19937_64& rng, const Plane& p, const Placed&
     }
 }
 
-TEST(NarrowPlane, HasTheGeneralGradientAndABoundNoLargerThatHolds) {
+std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+
+// In runs of 1 to kPlaneBatch records, as a tile hands them over; fixed16 mixes narrow triangles (below a
+// quarter of a pixel there) with others, which must get make_plane's plane itself.
+TEST(SmallPlanes, HaveTheGeneralGradientAndABoundNoLargerThatHoldsTheSameOnEveryTarget) {
     std::mt19937_64 rng(20261124);
     for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16}) {
+        SCOPED_TRACE(::testing::Message() << "precision " << static_cast<int>(precision));
         const Context c = make_context<Fault::none>({1024, 1024}, 4, precision);
-        const std::int64_t scale = std::int64_t{1} << c.bits;
-        int compared = 0;
+        std::vector<SmallFixed> records;
         for (int n = 0; n < 4000; ++n) {
-            // Fixed16 is narrow only below a quarter of a pixel.
-            const double side = precision == Precision::fixed16 ? 0.2 : n % 2 == 0 ? 4 : 31;
+            const double side = precision == Precision::fixed16 ? (n % 2 == 0 ? 0.2 : 4) : n % 2 == 0 ? 4 : 31;
             SmallFixed record;
-            if (place_small_fixed<Fault::none>(random_small_triangle(rng, side), 0, c, record) != Lane::small_fixed ||
-                !narrow_edges(record, scale))
-                continue;
-            const Placed p = placed_of(record, c);
-            SCOPED_TRACE(::testing::Message() << "precision " << static_cast<int>(precision) << ", triangle " << n);
-            const Plane narrow = make_plane_narrow(p, c), general = make_plane(p, c);
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.x0), std::bit_cast<std::uint64_t>(general.x0));
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.y0), std::bit_cast<std::uint64_t>(general.y0));
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.z0), std::bit_cast<std::uint64_t>(general.z0));
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.a), std::bit_cast<std::uint64_t>(general.a));
-            EXPECT_EQ(std::bit_cast<std::uint64_t>(narrow.b), std::bit_cast<std::uint64_t>(general.b));
-            EXPECT_LE(narrow.err, general.err);
-            if (narrow.err < std::numeric_limits<double>::infinity()) expect_bounded_over_box(rng, narrow, p, c);
-            if (::testing::Test::HasFailure()) return;
-            ++compared;
+            if (place_small_fixed<Fault::none>(random_small_triangle(rng, side), 0, c, record) == Lane::small_fixed)
+                records.push_back(record);
         }
-        EXPECT_GT(compared, 1000);  // the generator does make narrow small triangles in this mode
+        std::vector<Plane> first_target;  // the planes of the first target, which every other one must repeat
+        for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+            hwy::SetSupportedTargetsForTest(target);
+            SCOPED_TRACE(hwy::TargetName(target));
+            std::vector<Plane> planes(records.size());
+            int narrow_count = 0, wide_count = 0;
+            for (std::size_t first = 0, n = 1; first < records.size(); first += n, n = n % kPlaneBatch + 1) {
+                n = std::min(n, records.size() - first);
+                bool narrow[kPlaneBatch];
+                small_planes({records.data() + first, n}, c, planes.data() + first, narrow);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const SmallFixed& record = records[first + k];
+                    ASSERT_EQ(narrow[k], narrow_edges(record, std::int64_t{1} << c.bits));
+                    const Placed p = placed_of(record, c);
+                    const Plane& got = planes[first + k];
+                    const Plane general = make_plane(p, c);
+                    SCOPED_TRACE(::testing::Message() << "record " << first + k);
+                    EXPECT_EQ(bits(got.x0), bits(general.x0));
+                    EXPECT_EQ(bits(got.y0), bits(general.y0));
+                    EXPECT_EQ(bits(got.z0), bits(general.z0));
+                    EXPECT_EQ(bits(got.a), bits(general.a));
+                    EXPECT_EQ(bits(got.b), bits(general.b));
+                    if (narrow[k]) {
+                        EXPECT_LE(got.err, general.err);
+                        if (got.err < std::numeric_limits<double>::infinity()) expect_bounded_over_box(rng, got, p, c);
+                    } else {
+                        EXPECT_EQ(bits(got.err), bits(general.err));
+                    }
+                    if (!first_target.empty()) {
+                        EXPECT_EQ(bits(got.err), bits(first_target[first + k].err));
+                    }
+                    if (::testing::Test::HasFailure()) {
+                        hwy::SetSupportedTargetsForTest(0);
+                        return;
+                    }
+                    narrow_count += narrow[k];
+                    wide_count += !narrow[k];
+                }
+            }
+            hwy::SetSupportedTargetsForTest(0);
+            // The generator does make narrow small triangles in every mode, and others in fixed16.
+            EXPECT_GT(narrow_count, 1000);
+            if (precision == Precision::fixed16) {
+                EXPECT_GT(wide_count, 1000);
+            }
+            if (first_target.empty()) first_target = planes;
+        }
     }
 }
 
