@@ -389,8 +389,9 @@ template <Fault F, class CornersOf, class BlockDepth>
         const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
         const DepthRows rows = tile.rows_at(at);
         if (!depth(b, s, plane, rows, undecided)) continue;
+        decltype(auto) v = corners();  // once for the block's rows
         for (int r = 0; r < b.rows; ++r)
-            if (undecided[r] != 0) resolve<F>(corners(), plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
+            if (undecided[r] != 0) resolve<F>(v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
     }
 }
 
