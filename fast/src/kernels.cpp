@@ -247,38 +247,46 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
     return any != 0;
 }
 
-// The covered samples of each row of a block as bits, from integer edges that fit in 32 bits, in 32-bit
-// lanes (twice as many per vector as the depth test's), with all three edges in the registers. kVectors,
-// when not 0, is the number of vectors a row takes (a loop the compiler unrolls: a small triangle's rows
-// need one or two, and the loop's own instructions were as many as the evaluation's).
-template <int kVectors>
-HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint64_t* covered) {
+// The integer edges of a block that fit in 32 bits, in 32-bit lanes (twice as many per vector as the
+// depth test's), with all three edges in the registers: row_lanes(inside, r, k) is called for the rows r
+// in order and the vectors k = 0 .. count - 1 across each, `inside` the mask of the vector's lanes (columns
+// k * Lanes + l) inside all three. A count the compiler knows unrolls the loop (a small triangle's rows
+// take one or two vectors, and the loop's own instructions were as many as the evaluation's).
+template <class Row>
+HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block& b, int count, Row row_lanes) {
     using DI32 = hn::ScalableTag<std::int32_t>;
     const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
-    const std::uint64_t in_block = first_bits(b.width);
     hn::Vec<DI32> row[3], step[3], down[3];
     for (int e = 0; e < 3; ++e) {
         row[e] = hn::Add(hn::Set(di, edges.e[e]), hn::Mul(hn::Iota(di, 0), hn::Set(di, edges.dx[e])));
         step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(lanes32)));
         down[e] = hn::Set(di, edges.dy[e]);
     }
-    const int count = kVectors != 0 ? kVectors : (b.width + lanes32 - 1) / lanes32;
     for (int r = 0; r < b.rows; ++r) {
-        std::uint64_t bits = 0;
         auto v0 = row[0], v1 = row[1], v2 = row[2];
         for (int k = 0; k < count; ++k) {
-            // All three are >= 0 exactly when their bitwise or is > -1.
-            bits |= mask_bits(di, hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1))) << (k * lanes32);
+            // All three are >= 0 exactly when their bitwise or is > -1. Vector integer arithmetic wraps
+            // around: a lane inside the block ends at its true value, which fits (SmallEdges); the lanes
+            // past the block's width, which may not, are the caller's to mask off.
+            row_lanes(hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1)), r, k);
             v0 = hn::Add(v0, step[0]);
             v1 = hn::Add(v1, step[1]);
             v2 = hn::Add(v2, step[2]);
         }
         for (int e = 0; e < 3; ++e) row[e] = hn::Add(row[e], down[e]);
-        // Vector integer arithmetic wraps around: a lane inside the block ends at its true value, which
-        // fits (SmallEdges); the lanes past the block's width, which may not, are masked off.
-        covered[r] = bits & in_block;
     }
+}
+
+// The covered samples of each row of a block as bits (SmallEdgeLanes).
+HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint64_t* covered) {
+    const hn::ScalableTag<std::int32_t> di;
+    const int lanes32 = static_cast<int>(hn::Lanes(di));
+    const std::uint64_t in_block = first_bits(b.width);
+    for (int r = 0; r < b.rows; ++r) covered[r] = 0;
+    SmallEdgeLanes(edges, b, (b.width + lanes32 - 1) / lanes32, [&](auto inside, int r, int k) {
+        covered[r] |= (mask_bits(di, inside) << (k * lanes32)) & in_block;
+    });
 }
 
 // The depth test on the covered samples of each row (covered[r]), one run per row (its columns
@@ -314,33 +322,61 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
     return any != 0;
 }
 
-// DepthOnRuns for a block of at most kVectors vectors across: every row takes all kVectors from the
-// block's first column, its covered samples as the lanes' mask, whatever its run. A small triangle's
-// rows took one vector or two by their runs, which the loop's branch mispredicted (8% of a small-scene
-// render); the lanes outside the run cost less. px = i + sx is exact, as in DepthOnRuns.
+// DepthOnRuns for a block of at most kVectors vectors across, the covered samples straight from
+// SmallEdgeLanes: every row takes all kVectors from the block's first column, its covered samples as the
+// lanes' mask, whatever its run. A small triangle's rows took one vector or two by their runs, which the
+// loop's branch mispredicted (8% of a small-scene render); the lanes outside the run cost less. The
+// coverage is kept as lanes, not bits, and so is what stays undecided until the block is done: turning
+// each vector's mask into bits and back took a third of the loop. px = i + sx is exact, as in DepthOnRuns.
 template <int kVectors, bool kPerSample>
-HWY_INLINE bool DepthOnColumns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+HWY_INLINE bool DepthOnColumns(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                                std::uint64_t* undecided) {
     const D d;
-    const int lanes = static_cast<int>(hn::Lanes(d));
+    const DI di;
+    const hn::ScalableTag<std::int32_t> di32;
+    const hn::Rebind<std::int32_t, D> d32;  // a depth vector's lanes, 32 bits each
+    const int lanes = static_cast<int>(hn::Lanes(d)), lanes32 = static_cast<int>(hn::Lanes(di32));
+    // Row r's coverage from column k at inside[r * columns + k], as 0 or -1; past the block's width, 0.
+    // The edges take whole vectors of 32-bit lanes, twice a depth vector's (or as many, on one lane):
+    // at most kVectors + 1 depth vectors' columns.
+    const int vectors32 = (kVectors * lanes + lanes32 - 1) / lanes32, columns = vectors32 * lanes32;
+    HWY_ALIGN std::int32_t inside[kRowLanes * (kVectors + 1) * HWY_MAX_BYTES / sizeof(double)];
+    const auto width = hn::Set(di32, b.width);
+    SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {
+        const auto past = hn::Not(hn::Lt(hn::Iota(di32, k * lanes32), width));
+        hn::Store(hn::VecFromMask(di32, hn::AndNot(past, in)), di32, inside + r * columns + k * lanes32);
+    });
     const DepthLanes<kPerSample> lanes_test(p);
     VD px[kVectors];
     for (int v = 0; v < kVectors; ++v) px[v] = hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0));
+    // Row r's undecided samples of vector v, as mask bits at open[r * kVectors + v].
+    std::uint8_t open[kRowLanes * kVectors][8];
+    auto any = hn::FirstN(d, 0);
     double py = double(b.j0) + b.sy;
-    std::uint64_t any = 0;
     for (int r = 0; r < b.rows; ++r, py += 1) {
-        const std::uint64_t bits = covered[r];
         const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
         const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-        std::uint64_t open_bits = 0;
         for (int v = 0; v < kVectors; ++v) {
-            const auto open = lanes_test.test(px[v], b_dy, lanes_of(d, bits >> (v * lanes)), row, v * lanes);
-            open_bits |= mask_bits(d, open) << (v * lanes);
+            const auto lanes32_at = hn::LoadU(d32, inside + r * columns + v * lanes);
+            const auto covered = hn::RebindMask(d, hn::MaskFromVec(hn::PromoteTo(di, lanes32_at)));
+            const auto left = lanes_test.test(px[v], b_dy, covered, row, v * lanes);
+            hn::StoreMaskBits(d, left, open[r * kVectors + v]);
+            any = hn::Or(any, left);
         }
-        undecided[r] = open_bits;
-        any |= open_bits;
     }
-    return any != 0;
+    const bool some = !hn::AllFalse(d, any);
+    for (int r = 0; r < b.rows; ++r) {
+        std::uint64_t bits = 0;
+        if (some) {
+            for (int v = 0; v < kVectors; ++v) {
+                std::uint64_t chunk = 0;
+                std::memcpy(&chunk, open[r * kVectors + v], (lanes + 7) / 8);
+                bits |= chunk << (v * lanes);
+            }
+        }
+        undecided[r] = bits;
+    }
+    return some;
 }
 
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
@@ -355,17 +391,14 @@ bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p
 // Blocks up to four vectors across are tested by columns (DepthOnColumns), wider ones by runs.
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                 std::uint64_t* undecided) {
-    std::uint64_t covered[kRowLanes];
-    const int lanes32 = static_cast<int>(hn::Lanes(hn::ScalableTag<std::int32_t>()));
-    if (b.width <= lanes32) SmallEdgeRuns<1>(edges, b, covered);
-    else if (b.width <= 2 * lanes32) SmallEdgeRuns<2>(edges, b, covered);
-    else SmallEdgeRuns<0>(edges, b, covered);
     const int lanes = static_cast<int>(hn::Lanes(D()));
     return with_stored_bounds(rows, [&](auto per_sample) {
-        if (b.width <= lanes) return DepthOnColumns<1, per_sample>(b, covered, p, rows, undecided);
-        if (b.width <= 2 * lanes) return DepthOnColumns<2, per_sample>(b, covered, p, rows, undecided);
-        if (b.width <= 3 * lanes) return DepthOnColumns<3, per_sample>(b, covered, p, rows, undecided);
-        if (b.width <= 4 * lanes) return DepthOnColumns<4, per_sample>(b, covered, p, rows, undecided);
+        if (b.width <= lanes) return DepthOnColumns<1, per_sample>(b, edges, p, rows, undecided);
+        if (b.width <= 2 * lanes) return DepthOnColumns<2, per_sample>(b, edges, p, rows, undecided);
+        if (b.width <= 3 * lanes) return DepthOnColumns<3, per_sample>(b, edges, p, rows, undecided);
+        if (b.width <= 4 * lanes) return DepthOnColumns<4, per_sample>(b, edges, p, rows, undecided);
+        std::uint64_t covered[kRowLanes];
+        SmallEdgeRuns(edges, b, covered);
         return DepthOnRuns<per_sample>(b, covered, p, rows, undecided);
     });
 }
