@@ -188,12 +188,15 @@ public:
             clear();
             band_ = j0 / kTile;
         }
-        const auto found = at_.find(&t);
-        if (found != at_.end() && found->second.j0 == j0 && found->second.j1 == j1)
-            return std::span<const Span>(spans_).subspan(found->second.at, count);
-        if (spans_.size() + count > kept_) forget();
+        auto [entry, fresh] = at_.try_emplace(&t);  // one lookup, found or not
+        if (!fresh && entry->second.j0 == j0 && entry->second.j1 == j1)
+            return std::span<const Span>(spans_).subspan(entry->second.at, count);
+        if (spans_.size() + count > kept_) {
+            forget();
+            entry = at_.try_emplace(&t).first;
+        }
         const Kept kept{spans_.size(), j0, j1};
-        at_.insert_or_assign(&t, kept);
+        entry->second = kept;
         spans_.resize(spans_.size() + count);
         spans_of(t, c, j0, j1, std::span(spans_).subspan(kept.at, count));
         return std::span<const Span>(spans_).subspan(kept.at, count);

@@ -90,7 +90,8 @@ TEST(WideBands, HoldEverySpanOfTheirRowsAndTheAcceptBoundsExactly) {
 
 // BandSpans gives a triangle's spans as spans_of finds them, whether it kept them from an earlier tile,
 // dropped them for room (it keeps three triangles' here), moved to another row of tiles in between, or
-// was asked for other rows of the same row of tiles (band -1: rows 10 to 20 of the first).
+// was asked for other rows of the same row of tiles (band -1: rows 10 to 20 of the first); and having
+// given them, keeps them.
 TEST(BandSpans, GiveEachTrianglesSpansWhateverTheyKept) {
     const Context c = make_context<Fault::none>({200, 150}, 4, Precision::fixed8);
     const double r = 0x1p30;  // beyond the 64-bit path's range: the wide path
@@ -116,6 +117,8 @@ TEST(BandSpans, GiveEachTrianglesSpansWhateverTheyKept) {
             EXPECT_EQ(given[n].lo, expected[n].lo) << "triangle " << k << ", band " << band << ", span " << n;
             EXPECT_EQ(given[n].hi, expected[n].hi) << "triangle " << k << ", band " << band << ", span " << n;
         }
+        // Kept: asked again, the same spans, not walked again.
+        EXPECT_EQ(band_spans.of(t, c, j0, j1).data(), given.data()) << "triangle " << k << ", band " << band;
     }
 }
 
