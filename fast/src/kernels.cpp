@@ -340,11 +340,11 @@ HWY_INLINE bool DepthOnColumns(const Block& b, const SmallEdges& edges, const De
     // The edges take whole vectors of 32-bit lanes, twice a depth vector's (or as many, on one lane):
     // at most kVectors + 1 depth vectors' columns.
     const int vectors32 = (kVectors * lanes + lanes32 - 1) / lanes32, columns = vectors32 * lanes32;
-    HWY_ALIGN std::int32_t inside[kRowLanes * (kVectors + 1) * HWY_MAX_BYTES / sizeof(double)];
+    HWY_ALIGN std::int32_t inside[kRowLanes * (kVectors + 1) * hn::MaxLanes(D())];
     const auto width = hn::Set(di32, b.width);
     SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {
-        const auto past = hn::Not(hn::Lt(hn::Iota(di32, k * lanes32), width));
-        hn::Store(hn::VecFromMask(di32, hn::AndNot(past, in)), di32, inside + r * columns + k * lanes32);
+        const auto in_block = hn::Lt(hn::Iota(di32, k * lanes32), width);
+        hn::Store(hn::VecFromMask(di32, hn::And(in, in_block)), di32, inside + r * columns + k * lanes32);
     });
     const DepthLanes<kPerSample> lanes_test(p);
     VD px[kVectors];

@@ -7,11 +7,13 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <limits>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -141,6 +143,47 @@ void expect_same(Rows& got, Rows& want, const std::uint64_t* got_open, const std
     }
 }
 
+// A kernel's undecided rows before the call: set, so that a row it fails to write shows.
+std::uint64_t* poisoned(std::uint64_t (&open)[kRowLanes]) {
+    std::fill(std::begin(open), std::end(open), ~std::uint64_t{0});
+    return open;
+}
+
+// What the scalar test did to a block: whether it left any sample undecided, and whether it wrote any.
+struct Outcome {
+    bool undecided = false, written = false;
+};
+
+// The kernels on one block against the scalar test.
+Outcome expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage& cov, const Rows& start,
+                             const char* trial) {
+    SCOPED_TRACE(trial);
+    Rows want = start, got = start;
+    std::uint64_t want_open[kRowLanes], got_open[kRowLanes];
+    const bool want_any = depth_block_scalar(b, cov, p, want.view(), want_open);
+    const Outcome outcome{want_any, want.ids != start.ids};
+    EXPECT_EQ(depth_block(b, cov, p, got.view(), poisoned(got_open)), want_any);
+    expect_same(got, want, got_open, want_open, b, "depth_block");
+    if (cov.kind != Coverage::Kind::fixed && cov.kind != Coverage::Kind::masks) return outcome;
+    // The same rows as runs, and the integer edges in 32-bit lanes.
+    std::uint64_t covered[kRowLanes];
+    for (int r = 0; r < b.rows; ++r) covered[r] = row_coverage(b, cov, r);
+    Rows runs = start;
+    EXPECT_EQ(depth_runs(b, covered, p, runs.view(), poisoned(got_open)), want_any);
+    expect_same(runs, want, got_open, want_open, b, "depth_runs");
+    if (cov.kind != Coverage::Kind::fixed) return outcome;
+    SmallEdges small;
+    for (int k = 0; k < 3; ++k) {
+        small.e[k] = static_cast<std::int32_t>(cov.e[k]);
+        small.dx[k] = static_cast<std::int32_t>(cov.dx[k]);
+        small.dy[k] = static_cast<std::int32_t>(cov.dy[k]);
+    }
+    Rows lanes = start;
+    EXPECT_EQ(depth_small(b, small, p, lanes.view(), poisoned(got_open)), want_any);
+    expect_same(lanes, want, got_open, want_open, b, "depth_small");
+    return outcome;
+}
+
 TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
@@ -158,31 +201,22 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
                                  : kind == 2 ? random_masks(rng, b, masks)
                                              : random_float(rng, b, kind == 3);
             const Rows start = random_rows(rng, b, p, per_sample, trial / 2 % 2 == 1);
-            Rows want = start, got = start;
-            std::uint64_t want_open[kRowLanes], got_open[kRowLanes];
-            const bool want_any = depth_block_scalar(b, cov, p, want.view(), want_open);
-            ASSERT_EQ(depth_block(b, cov, p, got.view(), got_open), want_any) << "trial " << trial;
-            expect_same(got, want, got_open, want_open, b, "depth_block");
-            undecided_blocks += want_any;
-            written_blocks += want.ids != start.ids;
-            if (cov.kind != Coverage::Kind::fixed && cov.kind != Coverage::Kind::masks) continue;
-            // The same rows as runs, and the integer edges in 32-bit lanes.
-            std::uint64_t covered[kRowLanes];
-            for (int r = 0; r < b.rows; ++r) covered[r] = row_coverage(b, cov, r);
-            Rows runs = start;
-            ASSERT_EQ(depth_runs(b, covered, p, runs.view(), got_open), want_any) << "trial " << trial;
-            expect_same(runs, want, got_open, want_open, b, "depth_runs");
-            if (cov.kind != Coverage::Kind::fixed) continue;
-            SmallEdges small;
-            for (int k = 0; k < 3; ++k) {
-                small.e[k] = static_cast<std::int32_t>(cov.e[k]);
-                small.dx[k] = static_cast<std::int32_t>(cov.dx[k]);
-                small.dy[k] = static_cast<std::int32_t>(cov.dy[k]);
-            }
-            Rows lanes = start;
-            ASSERT_EQ(depth_small(b, small, p, lanes.view(), got_open), want_any) << "trial " << trial;
-            expect_same(lanes, want, got_open, want_open, b, "depth_small");
+            const Outcome outcome = expect_kernels_agree(b, p, cov, start, ("trial " + std::to_string(trial)).c_str());
+            if (HasFatalFailure()) return;
+            undecided_blocks += outcome.undecided;
+            written_blocks += outcome.written;
         }
+        // Every width the column kernel of depth_small takes (up to four vectors of eight lanes) and the
+        // first beyond, in both modes and at the right edge: the random blocks above meet few of them.
+        for (int width = 1; width <= 33; ++width)
+            for (int mode = 0; mode < 4; ++mode) {
+                std::uniform_int_distribution<int> origin(0, 1000), rows(1, 12);
+                const Block b{origin(rng), origin(rng), width, rows(rng), 0.5, 0.5};
+                const DepthPlane p = random_plane(rng, b);
+                const Rows start = random_rows(rng, b, p, mode % 2 == 1, mode / 2 == 1);
+                expect_kernels_agree(b, p, random_fixed(rng, b), start, ("width " + std::to_string(width)).c_str());
+                if (HasFatalFailure()) return;
+            }
         hwy::SetSupportedTargetsForTest(0);
         // The cases are not all trivial: many blocks write, many leave samples to the exact comparison.
         EXPECT_GT(written_blocks, 1500) << undecided_blocks;
@@ -228,14 +262,14 @@ TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
             hwy::SetSupportedTargetsForTest(target);
             SCOPED_TRACE(hwy::TargetName(target));
             Rows block = start, runs = start, lanes = start;
-            EXPECT_TRUE(depth_block(b, Coverage{}, p, block.view(), open));
+            EXPECT_TRUE(depth_block(b, Coverage{}, p, block.view(), poisoned(open)));
             expect_decisions(block, open, "depth_block");
             std::uint64_t covered[kRowLanes];
             for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(kCount);
-            EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), open));
+            EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
             expect_decisions(runs, open, "depth_runs");
             const SmallEdges inside{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}};
-            EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), open));
+            EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), poisoned(open)));
             expect_decisions(lanes, open, "depth_small");
         }
         hwy::SetSupportedTargetsForTest(0);
