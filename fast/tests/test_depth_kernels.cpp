@@ -154,24 +154,24 @@ struct Outcome {
     bool undecided = false, written = false;
 };
 
-// The kernels on one block against the scalar test.
-Outcome expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage& cov, const Rows& start,
-                             const char* trial) {
+// The kernels on one block against the scalar test, which did `outcome`; a wrong answer is fatal.
+void expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage& cov, const Rows& start,
+                          const char* trial, Outcome& outcome) {
     SCOPED_TRACE(trial);
     Rows want = start, got = start;
     std::uint64_t want_open[kRowLanes], got_open[kRowLanes];
     const bool want_any = depth_block_scalar(b, cov, p, want.view(), want_open);
-    const Outcome outcome{want_any, want.ids != start.ids};
-    EXPECT_EQ(depth_block(b, cov, p, got.view(), poisoned(got_open)), want_any);
+    outcome = {want_any, want.ids != start.ids};
+    ASSERT_EQ(depth_block(b, cov, p, got.view(), poisoned(got_open)), want_any);
     expect_same(got, want, got_open, want_open, b, "depth_block");
-    if (cov.kind != Coverage::Kind::fixed && cov.kind != Coverage::Kind::masks) return outcome;
+    if (cov.kind != Coverage::Kind::fixed && cov.kind != Coverage::Kind::masks) return;
     // The same rows as runs, and the integer edges in 32-bit lanes.
     std::uint64_t covered[kRowLanes];
     for (int r = 0; r < b.rows; ++r) covered[r] = row_coverage(b, cov, r);
     Rows runs = start;
-    EXPECT_EQ(depth_runs(b, covered, p, runs.view(), poisoned(got_open)), want_any);
+    ASSERT_EQ(depth_runs(b, covered, p, runs.view(), poisoned(got_open)), want_any);
     expect_same(runs, want, got_open, want_open, b, "depth_runs");
-    if (cov.kind != Coverage::Kind::fixed) return outcome;
+    if (cov.kind != Coverage::Kind::fixed) return;
     SmallEdges small;
     for (int k = 0; k < 3; ++k) {
         small.e[k] = static_cast<std::int32_t>(cov.e[k]);
@@ -179,9 +179,8 @@ Outcome expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage
         small.dy[k] = static_cast<std::int32_t>(cov.dy[k]);
     }
     Rows lanes = start;
-    EXPECT_EQ(depth_small(b, small, p, lanes.view(), poisoned(got_open)), want_any);
+    ASSERT_EQ(depth_small(b, small, p, lanes.view(), poisoned(got_open)), want_any);
     expect_same(lanes, want, got_open, want_open, b, "depth_small");
-    return outcome;
 }
 
 TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
@@ -201,7 +200,8 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
                                  : kind == 2 ? random_masks(rng, b, masks)
                                              : random_float(rng, b, kind == 3);
             const Rows start = random_rows(rng, b, p, per_sample, trial / 2 % 2 == 1);
-            const Outcome outcome = expect_kernels_agree(b, p, cov, start, ("trial " + std::to_string(trial)).c_str());
+            Outcome outcome;
+            expect_kernels_agree(b, p, cov, start, ("trial " + std::to_string(trial)).c_str(), outcome);
             if (HasFatalFailure()) return;
             undecided_blocks += outcome.undecided;
             written_blocks += outcome.written;
@@ -214,7 +214,9 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
                 const Block b{origin(rng), origin(rng), width, rows(rng), 0.5, 0.5};
                 const DepthPlane p = random_plane(rng, b);
                 const Rows start = random_rows(rng, b, p, mode % 2 == 1, mode / 2 == 1);
-                expect_kernels_agree(b, p, random_fixed(rng, b), start, ("width " + std::to_string(width)).c_str());
+                Outcome outcome;
+                expect_kernels_agree(b, p, random_fixed(rng, b), start, ("width " + std::to_string(width)).c_str(),
+                                     outcome);
                 if (HasFatalFailure()) return;
             }
         hwy::SetSupportedTargetsForTest(0);
