@@ -1,4 +1,4 @@
-// rast — the id and depth buffers as text files (shared/DESIGN.md: H lines of W values, top row first).
+// rast — the id and depth buffers as text files (docs/design.md: H lines of W values, top row first).
 #pragma once
 
 #include <rast/scene.h>

@@ -56,7 +56,7 @@ Image area_image(Viewport vp, const std::vector<reference::Rational>& area) {
     return image;
 }
 
-// shared/DESIGN.md: p/q in lowest terms, an integer when q = 1, top row first.
+// docs/design.md: p/q in lowest terms, an integer when q = 1, top row first.
 std::string format_area(Viewport vp, const std::vector<reference::Rational>& area) {
     std::string out;
     for (int j = vp.height - 1; j >= 0; --j) {

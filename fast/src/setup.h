@@ -122,7 +122,7 @@ inline void spans_of(const Setup& t, const Context& c, int j0, int j1, std::span
     wide_spans(t.p.v, c.bits, t.owns, c.offsets, t.p.i_lo, t.p.i_hi, j0, j1, spans);
 }
 
-// The tie rule of shared/DESIGN.md for edge a -> b of a counter-clockwise triangle: left (dy < 0) and
+// The tie rule of docs/design.md for edge a -> b of a counter-clockwise triangle: left (dy < 0) and
 // top (dy = 0, dx < 0) edges own their samples. Without branches: edge directions are random, so they
 // would mispredict.
 template <Fault F, class T>

@@ -21,7 +21,7 @@ mpq_class edge(const Vertex& a, const Vertex& b, double px, double py) {
     return (mpq_class(b.x) - a.x) * (mpq_class(py) - a.y) - (mpq_class(b.y) - a.y) * (mpq_class(px) - a.x);
 }
 
-// shared/DESIGN.md's rule, exactly: counter-clockwise order, left and top edges own their samples.
+// docs/design.md's rule, exactly: counter-clockwise order, left and top edges own their samples.
 bool exact_covers(Triangle t, double px, double py) {
     const int orient = sgn(edge(t.v[0], t.v[1], t.v[2].x, t.v[2].y));
     if (orient == 0) return false;

@@ -1,5 +1,5 @@
 // Extreme coordinates end to end: written as hex-floats in a .tri file, read by the reader and rendered
-// by the rast binary with every engine. Expectations are worked out by hand from shared/DESIGN.md.
+// by the rast binary with every engine. Expectations are worked out by hand from docs/design.md.
 #include "cli_harness.h"
 
 #include <gtest/gtest.h>
@@ -47,7 +47,7 @@ protected:
 //   d = 0 or -0.0: on the diagonal, owned by triangle 0, its left edge;
 //   d = -2^-1074: strictly inside triangle 0.
 // The fixed modes snap d to 0: triangle 0 for every d. (The float modes may decide either way: |d / 2| is
-// far below their error bound, and shared/DESIGN.md promises nothing more.)
+// far below their error bound, and docs/design.md promises nothing more.)
 TEST_F(ExtremeCoordinates, SubnormalVertexDecidesWhoOwnsTheCentre) {
     const auto scene = [](const std::string& d) {
         return "viewport 1 1\n"

@@ -1,5 +1,5 @@
 // Hand-computed id buffers for samples exactly on shared edges: llvmpipe, fed the mirrored scene, must
-// apply our left + top rule (shared/DESIGN.md). In each scene the triangle that must NOT own the shared
+// apply our left + top rule (docs/design.md). In each scene the triangle that must NOT own the shared
 // edge is the nearer one with the lower id, so a sample covered twice would show up as its id.
 #include <rast/llvmpipe.h>
 

@@ -84,7 +84,7 @@ Outcome watertight(const Scene& scene, const Engine& engine) {
     return Outcome::pass();
 }
 
-// Each triangle covers exactly the samples shared/DESIGN.md's rule gives it: strictly inside, or on a
+// Each triangle covers exactly the samples docs/design.md's rule gives it: strictly inside, or on a
 // left or top edge, or on a vertex whose two edges are both left or top.
 Outcome tie_rule(const Scene& scene, const Engine& engine) {
     const Scene geometry = engine.rasterized_geometry(scene);

@@ -48,7 +48,7 @@ Location locate(const Triangle& t, double x, double y) {
 }
 
 namespace {
-// DESIGN.md: traversed counter-clockwise, a left edge goes down (dy < 0), a top edge goes left (dy = 0,
+// docs/design.md: traversed counter-clockwise, a left edge goes down (dy < 0), a top edge goes left (dy = 0,
 // dx < 0). Comparing the endpoints decides this exactly, without forming dy.
 bool is_top_left(const Vertex& a, const Vertex& b) { return b.y < a.y || (b.y == a.y && b.x < a.x); }
 }  // namespace

@@ -1,6 +1,6 @@
 // rast — the fast rasterizer, as a library.
 //
-// Same conventions as the exact reference (shared/DESIGN.md): y up, pixel centres at (i + 1/2, j + 1/2),
+// Same conventions as the exact reference (docs/design.md): y up, pixel centres at (i + 1/2, j + 1/2),
 // the top-left tie rule, the (z, id) depth order. Where it departs from the reference is the precision
 // mode, chosen per call:
 //   fixed4 / fixed8 / fixed16: vertices snapped to a 1/2^N pixel grid (round to nearest, ties to even),

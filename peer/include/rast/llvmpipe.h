@@ -3,7 +3,7 @@
 // llvmpipe snaps vertices to 1/256 pixel and then decides coverage exactly, so on scenes whose
 // vertices are already on that grid its id buffer is a third, independent witness for the reference
 // and the fast path. How the scene is handed to GL, and why it keeps our conventions
-// (shared/DESIGN.md):
+// (docs/design.md):
 //   - y is mirrored (y -> H - y): llvmpipe's tie rule is left + bottom in GL's y-up window coordinates,
 //     which under the mirror is exactly our left + top rule. Rows are mirrored back on readback.
 //   - x and the mirrored y reach llvmpipe's window coordinates unchanged: the GL viewport is the

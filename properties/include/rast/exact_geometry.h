@@ -1,6 +1,6 @@
 // rast properties — the exact geometry the properties judge by, written independently of the engines
 // under test: the sign of an edge function, where a sample lies relative to a triangle, the tie rule of
-// shared/DESIGN.md, areas, and the fixed-point snapping of fast.h.
+// docs/design.md, areas, and the fixed-point snapping of fast.h.
 #pragma once
 
 #include <rast/scene.h>

@@ -1,4 +1,4 @@
-// rast — the properties that hold the engines to shared/DESIGN.md, as plain functions of a scene and an
+// rast — the properties that hold the engines to docs/design.md, as plain functions of a scene and an
 // engine. The property tests (RapidCheck) feed them generated scenes; `rast replay` feeds them the corpus.
 //
 // Every property is checkable from a Scene alone. Where the fast path rasterizes snapped geometry (the

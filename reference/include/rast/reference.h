@@ -2,7 +2,7 @@
 //
 // Every sample-versus-edge decision is a CGAL orientation predicate on the input doubles (filtered:
 // exact arithmetic only where the floating-point filter cannot decide); samples exactly on an edge or a
-// vertex follow the tie rule of shared/DESIGN.md; depths are compared exactly as rationals with the
+// vertex follow the tie rule of docs/design.md; depths are compared exactly as rationals with the
 // (z, id) total order. Any finite double coordinate is valid.
 #pragma once
 

@@ -1,6 +1,6 @@
 // rast — meshes from files, a camera, and the lecture's transforms that turn a mesh into a .tri Scene:
 // view, perspective projection, near-plane clipping in clip space, then the viewport transform of
-// shared/DESIGN.md. Model = identity: mesh coordinates are world coordinates.
+// docs/design.md. Model = identity: mesh coordinates are world coordinates.
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 // rast — the scene model: only what rasterization needs.
 //
-// Screen space (shared/DESIGN.md): x right, y up, the viewport covers [0, W] x [0, H]; pixel (i, j)
+// Screen space (docs/design.md): x right, y up, the viewport covers [0, W] x [0, H]; pixel (i, j)
 // covers [i, i+1] x [j, j+1]. z is depth: smaller is nearer. A triangle's id is its index in
 // Scene::triangles. Header-only, so that the installed fast library carries no other dependency.
 #pragma once

@@ -1,4 +1,4 @@
-// rast — the .tri scene format (shared/DESIGN.md): reading with errors that name file and line, and
+// rast — the .tri scene format (docs/design.md): reading with errors that name file and line, and
 // writing with hex-floats so that every double reads back bit-exact.
 //
 //   # key: value                 header metadata: leading comment lines of this form
