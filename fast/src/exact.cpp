@@ -2,7 +2,7 @@
 // hold any coordinate, product and sum here without rounding (and without the gcds of cpp_rational).
 #include "exact.h"
 
-#include "bounded.h"
+#include <rast/filters/orientation.h>
 
 #include <boost/multiprecision/cpp_int.hpp>
 
@@ -245,15 +245,8 @@ void with_integers(const Corners& v, int bits, Solve solve) {
 }  // namespace
 
 int orientation(const Corners& v) {
-    // Shewchuk's filter for orient2d: the double determinant has the right sign when its magnitude
-    // exceeds (3u + 16u^2)(|t1| + |t2|), plus 2^-1075 for each product that underflows (2^-1000 bounds
-    // both); overflow and NaN fall through to the exact test.
-    const double t1 = (v[1].x - v[0].x) * (v[2].y - v[0].y);
-    const double t2 = (v[1].y - v[0].y) * (v[2].x - v[0].x);
-    const double det = t1 - t2;
-    const double bound = (3 * kUnitDouble + 16 * kUnitDouble * kUnitDouble) * (std::abs(t1) + std::abs(t2)) + 0x1p-1000;
-    if (std::isfinite(det) && std::isfinite(bound) && std::abs(det) > bound) return det > 0 ? 1 : -1;
-    return cross(v[0], v[1], v[2]).m.sign();
+    const int sign = filters::orientation(v[0].x, v[0].y, v[1].x, v[1].y, v[2].x, v[2].y).certain_sign();
+    return sign != 0 ? sign : cross(v[0], v[1], v[2]).m.sign();
 }
 
 struct ExactPlanes::Cache {

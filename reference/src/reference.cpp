@@ -7,6 +7,8 @@
 #include "pixel_box.h"
 #include "validate.h"
 
+#include <rast/filters/orientation.h>
+
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/Exact_kernel_selector.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -212,24 +214,15 @@ public:
     }
 
 private:
+    // The shared orientation filter (filters/orientation.h) first, CGAL's interval filter and exact
+    // predicate where its bound cannot decide.
     CGAL::Orientation orientation(const Point& p, const Point& q, const Point& r) {
         ++stats_.orientation_tests;
-        if (const auto o = static_orientation(p, q, r)) return *o;
-        return orientation_(p, q, r);
-    }
-
-    // Shewchuk's static filter for orient2d, in front of CGAL's: the double determinant errs by at most
-    // (3 + 16u) u (|l| + |r|) (ccwerrboundA, u = 2^-53) without underflow, and each of its two products
-    // may add 2^-1075 where it underflows. 4u and 2^-1000 bound both and the rounding of the bound; an
-    // overflow makes the test fail (infinity or NaN compares false), and CGAL decides.
-    static std::optional<CGAL::Orientation> static_orientation(const Point& p, const Point& q, const Point& r) {
-        const double left = (q.x() - p.x()) * (r.y() - p.y());
-        const double right = (q.y() - p.y()) * (r.x() - p.x());
-        const double det = left - right;
-        const double bound = 0x1p-51 * (std::abs(left) + std::abs(right)) + 0x1p-1000;
-        if (det > bound) return CGAL::LEFT_TURN;
-        if (det < -bound) return CGAL::RIGHT_TURN;
-        return std::nullopt;
+        switch (filters::orientation(p.x(), p.y(), q.x(), q.y(), r.x(), r.y()).certain_sign()) {
+            case 1: return CGAL::LEFT_TURN;
+            case -1: return CGAL::RIGHT_TURN;
+            default: return orientation_(p, q, r);
+        }
     }
 
     static Edge edge(const Point& from, const Point& to) { return {from, to, classify(from, to)}; }
@@ -365,7 +358,7 @@ private:
 RAST_FMA_CLONES std::uint64_t offer_run(ZBuffer& zbuffer, std::int32_t id, const detail::BoundedPlane& plane,
                                         Sample q, int count, std::size_t step) {
     const detail::Bounded row = plane.row(q.y);
-    const detail::AffineLower lower = plane.lower(row);
+    const auto lower = plane.lower(row);
     std::uint64_t behind = 0;
     for (int k = 0; k < count; ++k, q.index += step, q.x += 1) {
         if (zbuffer.certainly_behind(q.index, lower(q.x))) {
