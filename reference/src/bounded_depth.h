@@ -7,12 +7,20 @@
 // signed area), each summed exactly and rounded to a double-double with a bound. Every step
 // below states its error; all bounds hold under round to nearest when no operation underflows or
 // overflows, which the safe range guarantees (see in_safe_range).
+//
+// Each bound is a sum of terms (filters/weights.h): the roundings of the step, measured a posteriori on
+// the values it rounded (u |result| for each rounded operation, u = 2^-53), and the errors its inputs
+// already carry. The Weights policy weighs them; the engine's is Sound, and the tests weaken one term at
+// a time (filter_bounds_test.cpp, docs/filters.md). Each final factor (1 + 2^-48) covers the rounding of
+// the bound's own computation and the second-order terms, as stated: it is proven, not testable.
 #pragma once
 
 #include "double_double.h"
 
+#include <rast/filters/weights.h>
 #include <rast/scene.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -26,6 +34,12 @@ struct Bounded {
     double err = 0;
 };
 
+// The terms of the bounds below.
+enum class SumTerm { rounding };                            // ProductSum
+enum class QuotientTerm { rounding, dividend, divisor };    // divide
+enum class AffineTerm { rounding, base, slope };            // affine and AffineLower
+enum class DifferenceTerm { first, second };                // certain_sign_of_difference
+
 // Coordinates 0 or of magnitude in [2^-100, 2^100] (sample positions, multiples of 1/16 up to 2^31, are
 // too). Then every coordinate and every difference of two is 0 or a multiple of 2^-152 (the last bit of
 // 2^-100) of magnitude at most 2^101; W, A and B are 0 or in [2^-304, 2^205]; p and q are 0 or in
@@ -38,9 +52,10 @@ inline bool in_safe_range(double v) {
 
 // A sum of exact products of double-doubles, as a double-double with its error bound. Each product
 // x y is the exact sum of the two-products of the parts (two doubles each; four parts when a low part
-// is not 0). Every double-double addition errs by at most u^2 (|x.hi| + |s.hi|) <= 2u^2 sum |t_k|
-// (double_double.h), so n terms t_k err by at most 2u^2 (n - 1) sum |t_k|. 2^-100 = 64u^2 covers up
-// to 32 terms and the rounding of sum |t_k| itself; the sums below have at most 16.
+// is not 0). Each part is added as Joldes, Muller and Popescu's DWPlusFP (2017) adds a double to a
+// double-double, whose one rounded operation, t = sum.lo + s.lo, errs by at most u |t|: the bound is u
+// times the sum of those |t| (SumTerm::rounding).
+template <class Weights = filters::Sound>
 class ProductSum {
 public:
     void add(DoubleDouble x, DoubleDouble y) {
@@ -52,71 +67,102 @@ public:
             if (y.lo != 0) term(x.lo, y.lo);
         }
     }
-    Bounded sum() const { return {sum_, 0x1p-100 * sum_abs_}; }
+    Bounded sum() const {
+        return {sum_, Weights::weight(SumTerm::rounding) * kUnitRoundoff * rounded_ * (1 + 0x1p-48)};
+    }
 
 private:
+    void plus(double y) {  // DWPlusFP
+        const DoubleDouble s = two_sum(sum_.hi, y);
+        const double t = sum_.lo + s.lo;
+        rounded_ += std::abs(t);
+        sum_ = two_sum(s.hi, t);
+    }
     void term(double x, double y) {
         const DoubleDouble product = two_prod(x, y);
-        sum_ = detail::add(detail::add(sum_, product.hi), product.lo);
-        sum_abs_ += std::abs(product.hi) + std::abs(product.lo);
+        plus(product.hi);
+        plus(product.lo);
     }
 
     DoubleDouble sum_;
-    double sum_abs_ = 0;
+    double rounded_ = 0;  // the sum of |t| over the additions
 };
 
-// x / y, given |y.hi| (1 - 2^-50) > 4 y.err. With q = RN(x.hi / y.hi), x.hi - q y.hi is a double
-// (computed exactly by the FMA); the correction (x - q y) / y.hi then errs by at most about 15u^2 |x/y|
-// (two roundings of terms of size u |x|, one of the division), bounded here by 2^-101 |q| = 32u^2 |q|.
-// The operands' own errors add (x.err + |x/y| y.err) / |y|, with |x/y| <= |q| (1 + 2^-50) and
-// |y| >= |y.hi| (1 - 2^-50) - y.err. The final factor covers the rounding of the bound itself.
-inline Bounded divide(const Bounded& x, const Bounded& y) {
+// x / y, given |y.hi| (1 - 2^-50) > 4 y.err. With q = RN(x.hi / y.hi), the remainder x.hi - q y.hi is
+// a double (the FMA computes it exactly), so R = x - q y = remainder + x.lo - q y.lo exactly, computed as
+// r with two roundings: t = remainder + x.lo (error below u |t|) and the FMA r = t - q y.lo (below u |r|).
+// The correction c = RN(r / y.hi) errs by at most u |c| more, and dividing by y.hi rather than y by
+// |R| |y.lo| / (|y| |y.hi|) <= |r| |y.lo| / |y.hi|^2 (1 + 2^-50): QuotientTerm::rounding. The inputs' own
+// errors add x.err / |y| (dividend) and |x/y| y.err / |y| (divisor), with |x/y| <= |q| (1 + 2^-50) and
+// |y| >= |y.hi| (1 - 2^-50) - y.err.
+template <class Weights = filters::Sound>
+Bounded divide(const Bounded& x, const Bounded& y) {
     const double q = x.value.hi / y.value.hi;
     const double remainder = std::fma(-q, y.value.hi, x.value.hi);
-    const double r = std::fma(-q, y.value.lo, remainder + x.value.lo);
-    const double aq = std::abs(q);
-    const double propagated =
-        (x.err + aq * (1 + 0x1p-50) * y.err) / (std::abs(y.value.hi) * (1 - 0x1p-50) - y.err);
-    return {two_sum(q, r / y.value.hi), (0x1p-101 * aq + propagated) * (1 + 0x1p-48)};
+    const double t = remainder + x.value.lo;
+    const double r = std::fma(-q, y.value.lo, t);
+    const double c = r / y.value.hi;
+    const double ahi = std::abs(y.value.hi);
+    const double rounding = (kUnitRoundoff * (std::abs(t) + std::abs(r)) + std::abs(r) * std::abs(y.value.lo) / ahi) / ahi +
+                            kUnitRoundoff * std::abs(c);
+    const double least_y = ahi * (1 - 0x1p-50) - y.err;
+    const double dividend = x.err / least_y;
+    const double divisor = std::abs(q) * (1 + 0x1p-50) * y.err / least_y;
+    return {two_sum(q, c), (Weights::weight(QuotientTerm::rounding) * rounding +
+                            Weights::weight(QuotientTerm::dividend) * dividend +
+                            Weights::weight(QuotientTerm::divisor) * divisor) *
+                               (1 + 0x1p-48)};
 }
 
 // base + slope (v - origin), v and origin in the safe range. With d = v - origin exactly (two-sum) and
-// m = slope.hi d.hi exactly (two-product), the rest is slope.hi d.lo + slope.lo d.hi (each below
-// u |m|) plus the dropped slope.lo d.lo (below u^2 |m|). The rounded operations err by at most
-// 13u^2 |m| + 3u^2 |base.hi|, bounded by 2^-101 = 32u^2 times |base.hi| + |m|. slope's own error adds
-// slope.err |d|, with |d| <= |d.hi| (1 + u); the final factor covers that and the rounding of the bound.
-inline Bounded affine(const Bounded& base, const Bounded& slope, double v, double origin) {
+// m = slope.hi d.hi exactly (two-product), the rest is slope.hi d.lo + slope.lo d.hi + m.lo, computed by
+// two FMAs, t1 = slope.lo d.hi + m.lo and rest = slope.hi d.lo + t1; with s = base.hi + m.hi exactly, the
+// low parts add in two more roundings, t2 = base.lo + rest and t3 = t2 + s.lo, and s.hi + t3 is exact.
+// Each rounding errs by at most u times its result, and the dropped slope.lo d.lo adds its magnitude:
+// AffineTerm::rounding. The inputs' own errors add base.err (base) and slope.err |v - origin| (slope),
+// with |v - origin| <= |d.hi| (1 + u).
+template <class Weights = filters::Sound>
+Bounded affine(const Bounded& base, const Bounded& slope, double v, double origin) {
     const DoubleDouble d = two_sum(v, -origin);
     const DoubleDouble m = two_prod(slope.value.hi, d.hi);
-    const double rest = std::fma(slope.value.hi, d.lo, std::fma(slope.value.lo, d.hi, m.lo));
+    const double t1 = std::fma(slope.value.lo, d.hi, m.lo);
+    const double rest = std::fma(slope.value.hi, d.lo, t1);
     const DoubleDouble s = two_sum(base.value.hi, m.hi);
-    const double err = base.err + slope.err * std::abs(d.hi) +
-                       0x1p-101 * (std::abs(base.value.hi) + std::abs(m.hi));
-    return {two_sum(s.hi, (base.value.lo + rest) + s.lo), err * (1 + 0x1p-48)};
+    const double t2 = base.value.lo + rest;
+    const double t3 = t2 + s.lo;
+    const double rounding = kUnitRoundoff * (std::abs(t1) + std::abs(rest) + std::abs(t2) + std::abs(t3)) +
+                            std::abs(slope.value.lo) * std::abs(d.lo);
+    return {two_sum(s.hi, t3), (Weights::weight(AffineTerm::rounding) * rounding +
+                                Weights::weight(AffineTerm::base) * base.err +
+                                Weights::weight(AffineTerm::slope) * slope.err * std::abs(d.hi)) *
+                                   (1 + 0x1p-48)};
 }
 
 // A lower bound on the value affine(base, slope, v, origin) encloses, in a fifth of its operations: the
 // cheap test in front of it. With d, m and s the rounded v - origin, slope.hi d and base.hi + m, the
 // exact value is base + slope (v - origin), which differs from s by at most
-//   |base.lo| + base.err                                 (base)
-//   + (|slope.lo| + slope.err) |v - origin|               (the slope beyond its high part)
+//   |base.lo| + base.err                                 (AffineTerm::base)
+//   + (|slope.lo| + slope.err) |v - origin|               (AffineTerm::slope)
 //   + |slope.hi| u |d| + u |m| <= 2^-52 |slope.hi| |d| (1 + u)   (rounding d and m)
 //   + u |s|                                               (rounding s),
 // with |v - origin| <= |d| (1 + 2u). Subtracting the bound from s rounds by at most u (|s| + bound). As
 // |s| <= (|base.hi| + |slope.hi| |d| (1 + u)) (1 + u), the two u |s| are below 2^-51 (|base.hi| +
-// |slope.hi| |d|): the bound is affine in |d| with coefficients fixed along a row, so a sample pays one
-// multiply-add for it. The factors (1 + 2^-48) cover the remaining u bound and the rounding of the
-// coefficients and of the bound. The safe range keeps every term away from underflow and overflow, as
-// for affine.
+// |slope.hi| |d|); with the 2^-52 above, the roundings are AffineTerm::rounding. The bound is affine in
+// |d| with coefficients fixed along a row, so a sample pays one multiply-add for it. The factors
+// (1 + 2^-48) cover the remaining u bound and the rounding of the coefficients and of the bound.
+template <class Weights = filters::Sound>
 class AffineLower {
 public:
     AffineLower(const Bounded& base, const Bounded& slope, double origin)
         : base_(base.value.hi),
           slope_(slope.value.hi),
           origin_(origin),
-          at_origin_((std::abs(base.value.lo) + base.err + 0x1p-51 * std::abs(base.value.hi)) * (1 + 0x1p-48)),
-          per_d_(((std::abs(slope.value.lo) + slope.err + 0x1p-52 * std::abs(slope.value.hi)) * (1 + 0x1p-50) +
-                  0x1p-51 * std::abs(slope.value.hi)) *
+          at_origin_((Weights::weight(AffineTerm::base) * (std::abs(base.value.lo) + base.err) +
+                      Weights::weight(AffineTerm::rounding) * 0x1p-51 * std::abs(base.value.hi)) *
+                     (1 + 0x1p-48)),
+          per_d_((Weights::weight(AffineTerm::slope) * (std::abs(slope.value.lo) + slope.err) * (1 + 0x1p-50) +
+                  Weights::weight(AffineTerm::rounding) * (0x1p-52 * (1 + 0x1p-50) + 0x1p-51) *
+                      std::abs(slope.value.hi)) *
                  (1 + 0x1p-48)) {}
 
     double operator()(double v) const {
@@ -133,6 +179,7 @@ class BoundedPlane {
 public:
     // The plane of t, or nothing when a coordinate is outside the safe range or the area is too small
     // for the bound on W to keep its sign (then the exact depth decides everything).
+    template <class Weights = filters::Sound>
     static std::optional<BoundedPlane> make(const Triangle& t) {
         for (const Vertex& v : t.v)
             if (!in_safe_range(v.x) || !in_safe_range(v.y) || !in_safe_range(v.z)) return std::nullopt;
@@ -141,7 +188,7 @@ public:
         // the vertices' z, which then need not be.
         const auto& v = t.v;
         const auto difference = [&](int k, int l, double Vertex::*c) { return two_sum(v[k].*c, -(v[l].*c)); };
-        ProductSum w, a, b;
+        ProductSum<Weights> w, a, b;
         w.add(difference(1, 0, &Vertex::x), difference(2, 0, &Vertex::y));
         w.add(difference(0, 2, &Vertex::x), difference(1, 0, &Vertex::y));
         const Bounded area = w.sum();
@@ -150,17 +197,26 @@ public:
             a.add({v[k].z, 0}, difference((k + 1) % 3, (k + 2) % 3, &Vertex::y));
             b.add({v[k].z, 0}, difference((k + 2) % 3, (k + 1) % 3, &Vertex::x));
         }
-        const Bounded p = divide(a.sum(), area);
-        const Bounded q = divide(b.sum(), area);
+        const Bounded p = divide<Weights>(a.sum(), area);
+        const Bounded q = divide<Weights>(b.sum(), area);
         return BoundedPlane(v[0], p, q);
     }
 
     // The depth along the sample row at height y (x = x0): z0 + q (y - y0).
-    Bounded row(double y) const { return affine(Bounded{{z0_, 0}, 0}, q_, y, y0_); }
+    template <class Weights = filters::Sound>
+    Bounded row(double y) const {
+        return affine<Weights>(Bounded{{z0_, 0}, 0}, q_, y, y0_);
+    }
     // The depth at (x, y), from the row at height y.
-    Bounded at(const Bounded& row, double x) const { return affine(row, p_, x, x0_); }
+    template <class Weights = filters::Sound>
+    Bounded at(const Bounded& row, double x) const {
+        return affine<Weights>(row, p_, x, x0_);
+    }
     // lower(row)(x) is a double at most the depth at (x, y), from the row at height y.
-    AffineLower lower(const Bounded& row) const { return AffineLower(row, p_, x0_); }
+    template <class Weights = filters::Sound>
+    AffineLower<Weights> lower(const Bounded& row) const {
+        return AffineLower<Weights>(row, p_, x0_);
+    }
 
 private:
     BoundedPlane(const Vertex& anchor, const Bounded& p, const Bounded& q)
@@ -189,17 +245,18 @@ inline std::optional<double> nearest(const Bounded& z) {
     return std::nullopt;
 }
 
-// The sign of a - b when the enclosures decide it, else 0. The difference's rounding errors are below
-// u times each rounded partial result; 2u and the final factor bound them.
-inline int certain_sign_of_difference(const Bounded& a, const Bounded& b) {
-    const DoubleDouble high = two_sum(a.value.hi, -b.value.hi);
-    const double low = a.value.lo - b.value.lo;
-    const double rest = high.lo + low;
-    const double difference = high.hi + rest;
-    const double bound = (a.err + b.err + 0x1p-52 * (std::abs(low) + std::abs(rest) + std::abs(difference))) *
-                         (1 + 0x1p-48);
-    if (difference > bound) return 1;
-    if (difference < -bound) return -1;
+// The sign of a - b when the enclosures decide it, else 0: a - b is certainly positive when
+// a.value - b.value > a.err + b.err (DifferenceTerm::first and ::second), certainly negative when
+// a.value - b.value < -(a.err + b.err). Both comparisons are made exactly, as signs of sums of six doubles
+// (the parts, and the weighted errors, whose weights are 1, 1/2 or 0: exact): the only slack is the
+// enclosures' own. Called only where two rounded depths tie.
+template <class Weights = filters::Sound>
+int certain_sign_of_difference(const Bounded& a, const Bounded& b) {
+    const double radius_a = Weights::weight(DifferenceTerm::first) * a.err;
+    const double radius_b = Weights::weight(DifferenceTerm::second) * b.err;
+    const double ah = a.value.hi, al = a.value.lo, bh = b.value.hi, bl = b.value.lo;
+    if (exact_sign_of_sum(std::array{ah, -bh, al, -bl, -radius_a, -radius_b}) > 0) return 1;
+    if (exact_sign_of_sum(std::array{ah, -bh, al, -bl, radius_a, radius_b}) < 0) return -1;
     return 0;
 }
 

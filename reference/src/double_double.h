@@ -3,7 +3,9 @@
 // overflow: the callers (bounded_depth.h) guarantee both by the range of their inputs.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace rast::reference::detail {
 
@@ -29,11 +31,25 @@ inline DoubleDouble two_prod(double a, double b) {
     return {p, std::fma(a, b, -p)};
 }
 
-// x + y (Joldes, Muller, Popescu 2017, "DWPlusFP"). The only rounded operation is the sum of the two
-// low parts, whose error is at most u (|x.lo| + |s.lo|) <= u^2 (|x.hi| + |s.hi|).
-inline DoubleDouble add(DoubleDouble x, double y) {
-    const DoubleDouble s = two_sum(x.hi, y);
-    return two_sum(s.hi, x.lo + s.lo);
+// The sign of the exact sum of the doubles xs. Grows a nonoverlapping expansion one double at a time
+// (Shewchuk's Grow-Expansion: two-sums only, nothing rounded); the sign of such an expansion is that of its
+// largest non-zero component, the last one. No underflow or overflow (the callers' safe range).
+template <std::size_t N>
+int exact_sign_of_sum(const std::array<double, N>& xs) {
+    std::array<double, N> e{};  // e[0..n) the expansion, increasing magnitude
+    std::size_t n = 0;
+    for (const double x : xs) {
+        double q = x;
+        for (std::size_t k = 0; k < n; ++k) {
+            const DoubleDouble s = two_sum(q, e[k]);
+            e[k] = s.lo;
+            q = s.hi;
+        }
+        e[n++] = q;
+    }
+    for (std::size_t k = n; k-- > 0;)
+        if (e[k] != 0) return e[k] > 0 ? 1 : -1;
+    return 0;
 }
 
 }  // namespace rast::reference::detail
