@@ -7,6 +7,7 @@
 #include "nearest_double.h"
 
 #include <rast/filters/adversary.h>
+#include <rast/filters/orientation.h>
 
 #include <gtest/gtest.h>
 
@@ -267,6 +268,28 @@ TEST(FilterBounds, AffineLower) {
     EXPECT_LT(least_lower_slack<Without<AffineTerm::rounding>>(cases), 0.0);
     EXPECT_LT(least_lower_slack<Without<AffineTerm::base>>(cases), 0.0);
     EXPECT_LT(least_lower_slack<Without<AffineTerm::slope>>(cases), 0.0);
+}
+
+// --- end to end: a weakened bound changes a framebuffer ----------------------------------------------
+
+// corpus/filters/orientation-halved-flips-a-centre.tri: the centre (24.5, 16.5) lies left of p -> q by
+// 7.6e-15, inside the triangle, and the reference covers it. The double determinant errs the other way,
+// by 0.57 of the orientation filter's bound: the filter leaves the sign to CGAL, but halved it would
+// answer "right", and a reference built on it would leave pixel (24, 16) empty.
+TEST(FilterBounds, HalvedOrientationFlipsACentre) {
+    const Vertex p{0x1.e002a9a706b47p-9, 0x1.83a8488be8176p-12, 0}, q{0x1.2230d0aad74edp+6, 0x1.86e6e87125c75p+5, 0};
+    const double x = 24.5, y = 16.5;
+    const Rational exact_det =
+        (Rational(q.x) - Rational(p.x)) * (Rational(y) - Rational(p.y)) - (Rational(q.y) - Rational(p.y)) * (Rational(x) - Rational(p.x));
+    EXPECT_GT(exact_det, 0);
+    EXPECT_EQ(filters::orientation(p.x, p.y, q.x, q.y, x, y).certain_sign(), 0);
+    EXPECT_EQ(filters::orientation<Halved>(p.x, p.y, q.x, q.y, x, y).certain_sign(), -1);
+    Scene scene;
+    scene.viewport = {80, 50};
+    scene.triangles = {Triangle{{p, q, Vertex{0, 40, 0}}}};
+    const Framebuffer fb = render(scene);
+    EXPECT_EQ(fb.id(24, 16), 0);
+    EXPECT_TRUE(covers(scene.triangles[0], x, y));
 }
 
 // --- the sign of a difference ---------------------------------------------------------------------
