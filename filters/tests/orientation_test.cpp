@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -18,19 +17,10 @@ namespace {
 using testing::Rational;
 using Points = std::array<double, 6>;  // px py qx qy rx ry
 
-struct Halved {
-    static constexpr double weight(OrientationTerm) { return 0.5; }
-};
-template <OrientationTerm Dropped>
-struct Without {
-    static constexpr double weight(OrientationTerm t) { return t == Dropped ? 0 : 1; }
-};
-
-// How many climbs each generator makes: bounded in CI, larger in a campaign (RAST_FILTER_CLIMBS).
-int climbs(int ci_default) {
-    const char* env = std::getenv("RAST_FILTER_CLIMBS");
-    return env ? std::max(1, std::atoi(env)) : ci_default;
-}
+using testing::climbs;
+using testing::Halved;
+using testing::Without;
+using testing::worst;
 
 Rational exact_det(const Points& c) {
     const Rational px(c[0]), py(c[1]);
@@ -79,13 +69,6 @@ std::vector<Points> underflow_cases(const std::vector<Points>& rounding) {
     return cases;
 }
 
-template <class Weights>
-double worst_ratio(const std::vector<Points>& cases) {
-    double worst = 0;
-    for (const Points& c : cases) worst = std::max(worst, error_ratio<Weights>(c));
-    return worst;
-}
-
 class OrientationBound : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
@@ -112,19 +95,19 @@ TEST_F(OrientationBound, IsSoundOnAdversarialInputs) {
                 EXPECT_EQ(sign, exact.sign());
             }
         }
-    const double worst = worst_ratio<Sound>(*rounding_);
-    std::printf("orientation: worst error / bound %.3f (relative term, %zu climbs)\n", worst, rounding_->size());
-    RecordProperty("worst_ratio", std::to_string(worst));
+    const double sound = worst(*rounding_, error_ratio<Sound>);
+    std::printf("orientation: worst error / bound %.3f (relative term, %zu climbs)\n", sound, rounding_->size());
+    RecordProperty("worst_ratio", std::to_string(sound));
 }
 
-TEST_F(OrientationBound, HalvedFails) { EXPECT_GT(worst_ratio<Halved>(*rounding_), 1.0); }
+TEST_F(OrientationBound, HalvedFails) { EXPECT_GT(worst(*rounding_, error_ratio<Halved>), 1.0); }
 
 TEST_F(OrientationBound, WithoutTheRelativeTermFails) {
-    EXPECT_GT(worst_ratio<Without<OrientationTerm::relative>>(*rounding_), 1.0);
+    EXPECT_GT(worst(*rounding_, error_ratio<Without<OrientationTerm::relative>>), 1.0);
 }
 
 TEST_F(OrientationBound, WithoutTheUnderflowTermFails) {
-    EXPECT_GT(worst_ratio<Without<OrientationTerm::underflow>>(*underflow_), 1.0);
+    EXPECT_GT(worst(*underflow_, error_ratio<Without<OrientationTerm::underflow>>), 1.0);
 }
 
 // Hand-computed: p = (2^-53, 0), q = (1, 1), r = (2, 2). Exactly, det = (1 - 2^-53) 2 - 1 (2 - 2^-53) =

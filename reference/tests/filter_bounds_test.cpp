@@ -14,10 +14,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <cstdlib>
 #include <random>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace rast::reference {
@@ -31,27 +29,11 @@ using detail::QuotientTerm;
 using detail::SumTerm;
 using filters::Sound;
 using filters::testing::climb;
+using filters::testing::climbs;
+using filters::testing::Halved;
 using filters::testing::ratio;
-
-struct Halved {
-    template <class Term>
-    static constexpr double weight(Term) {
-        return 0.5;
-    }
-};
-template <auto Dropped>
-struct Without {
-    template <class Term>
-    static constexpr double weight(Term t) {
-        if constexpr (std::is_same_v<Term, decltype(Dropped)>) return t == Dropped ? 0 : 1;
-        return 1;
-    }
-};
-
-int climbs(int ci_default) {
-    const char* env = std::getenv("RAST_FILTER_CLIMBS");
-    return env ? std::max(1, std::atoi(env)) : ci_default;
-}
+using filters::testing::Without;
+using filters::testing::worst;
 
 Rational exact(const DoubleDouble& x) { return Rational(x.hi) + Rational(x.lo); }
 
@@ -116,20 +98,13 @@ std::vector<SumInputs> sum_cases(int count) {
     return cases;
 }
 
-template <class Weights>
-double worst_sum(const std::vector<SumInputs>& cases) {
-    double worst = 0;
-    for (const SumInputs& in : cases) worst = std::max(worst, sum_ratio<Weights>(in));
-    return worst;
-}
-
 TEST(FilterBounds, ProductSum) {
     const auto cases = sum_cases(climbs(60));
-    const double worst = worst_sum<Sound>(cases);
-    std::printf("ProductSum: worst error / bound %.3f\n", worst);
-    EXPECT_LE(worst, 1.0);
-    EXPECT_GT(worst_sum<Halved>(cases), 1.0);
-    EXPECT_GT(worst_sum<Without<SumTerm::rounding>>(cases), 1.0);
+    const double sound = worst(cases, sum_ratio<Sound>);
+    std::printf("ProductSum: worst error / bound %.3f\n", sound);
+    EXPECT_LE(sound, 1.0);
+    EXPECT_GT(worst(cases, sum_ratio<Halved>), 1.0);
+    EXPECT_GT(worst(cases, sum_ratio<Without<SumTerm::rounding>>), 1.0);
 }
 
 // --- divide ---------------------------------------------------------------------------------------
@@ -162,23 +137,16 @@ std::vector<QuotientInputs> quotient_cases(int count) {
     return cases;
 }
 
-template <class Weights>
-double worst_quotient(const std::vector<QuotientInputs>& cases) {
-    double worst = 0;
-    for (const QuotientInputs& in : cases) worst = std::max(worst, quotient_ratio<Weights>(in));
-    return worst;
-}
-
 TEST(FilterBounds, Divide) {
     const auto cases = quotient_cases(climbs(60));
-    const double worst = worst_quotient<Sound>(cases);
-    std::printf("divide: worst error / bound %.3f, of exact inputs (the roundings alone) %.3f\n", worst,
-                worst_quotient<Sound>(exact_inputs(cases)));
-    EXPECT_LE(worst, 1.0);
-    EXPECT_GT(worst_quotient<Halved>(cases), 1.0);
-    EXPECT_GT(worst_quotient<Without<QuotientTerm::rounding>>(cases), 1.0);
-    EXPECT_GT(worst_quotient<Without<QuotientTerm::dividend>>(cases), 1.0);
-    EXPECT_GT(worst_quotient<Without<QuotientTerm::divisor>>(cases), 1.0);
+    const double sound = worst(cases, quotient_ratio<Sound>);
+    std::printf("divide: worst error / bound %.3f, of exact inputs (the roundings alone) %.3f\n", sound,
+                worst(exact_inputs(cases), quotient_ratio<Sound>));
+    EXPECT_LE(sound, 1.0);
+    EXPECT_GT(worst(cases, quotient_ratio<Halved>), 1.0);
+    EXPECT_GT(worst(cases, quotient_ratio<Without<QuotientTerm::rounding>>), 1.0);
+    EXPECT_GT(worst(cases, quotient_ratio<Without<QuotientTerm::dividend>>), 1.0);
+    EXPECT_GT(worst(cases, quotient_ratio<Without<QuotientTerm::divisor>>), 1.0);
 }
 
 // --- affine and its lower bound -------------------------------------------------------------------
@@ -232,13 +200,6 @@ std::vector<AffineInputs> affine_cases(int count, std::uint64_t seed, int error_
 }
 
 template <class Weights>
-double worst_affine(const std::vector<AffineInputs>& cases) {
-    double worst = 0;
-    for (const AffineInputs& in : cases) worst = std::max(worst, affine_ratio<Weights>(in));
-    return worst;
-}
-
-template <class Weights>
 double least_lower_slack(const std::vector<AffineInputs>& cases) {
     double least = 1;
     for (const AffineInputs& in : cases) least = std::min(least, lower_slack<Weights>(in));
@@ -247,14 +208,14 @@ double least_lower_slack(const std::vector<AffineInputs>& cases) {
 
 TEST(FilterBounds, Affine) {
     const auto cases = affine_cases(climbs(60), 35, -60, affine_ratio<Sound>);
-    const double worst = worst_affine<Sound>(cases);
-    std::printf("affine: worst error / bound %.3f, of exact inputs (the roundings alone) %.3f\n", worst,
-                worst_affine<Sound>(exact_inputs(cases)));
-    EXPECT_LE(worst, 1.0);
-    EXPECT_GT(worst_affine<Halved>(cases), 1.0);
-    EXPECT_GT(worst_affine<Without<AffineTerm::rounding>>(cases), 1.0);
-    EXPECT_GT(worst_affine<Without<AffineTerm::base>>(cases), 1.0);
-    EXPECT_GT(worst_affine<Without<AffineTerm::slope>>(cases), 1.0);
+    const double sound = worst(cases, affine_ratio<Sound>);
+    std::printf("affine: worst error / bound %.3f, of exact inputs (the roundings alone) %.3f\n", sound,
+                worst(exact_inputs(cases), affine_ratio<Sound>));
+    EXPECT_LE(sound, 1.0);
+    EXPECT_GT(worst(cases, affine_ratio<Halved>), 1.0);
+    EXPECT_GT(worst(cases, affine_ratio<Without<AffineTerm::rounding>>), 1.0);
+    EXPECT_GT(worst(cases, affine_ratio<Without<AffineTerm::base>>), 1.0);
+    EXPECT_GT(worst(cases, affine_ratio<Without<AffineTerm::slope>>), 1.0);
 }
 
 // The lower bound's climb goes toward the smallest slack, the place where a weaker bound breaks first.

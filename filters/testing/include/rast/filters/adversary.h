@@ -6,15 +6,49 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <limits>
 #include <random>
+#include <type_traits>
 
 namespace rast::filters::testing {
 
 using Rational = boost::multiprecision::mpq_rational;
+
+// Weights policies (filters/weights.h) that weaken a bound: every term halved, or one term dropped.
+struct Halved {
+    template <class Term>
+    static constexpr double weight(Term) {
+        return 0.5;
+    }
+};
+template <auto Dropped>
+struct Without {
+    template <class Term>
+    static constexpr double weight(Term t) {
+        if constexpr (std::is_same_v<Term, decltype(Dropped)>) return t == Dropped ? 0 : 1;
+        return 1;
+    }
+};
+
+// How many climbs a generator makes: ci_default in CI, more in a campaign (RAST_FILTER_CLIMBS,
+// scripts/filter-campaign).
+inline int climbs(int ci_default) {
+    const char* env = std::getenv("RAST_FILTER_CLIMBS");
+    return env ? std::max(1, std::atoi(env)) : ci_default;
+}
+
+// The largest ratio(case) over the cases.
+template <class Cases, class Ratio>
+double worst(const Cases& cases, Ratio ratio) {
+    double largest = 0;
+    for (const auto& c : cases) largest = std::max(largest, ratio(c));
+    return largest;
+}
 
 // error / bound, with error exact; +infinity when a non-zero error meets a zero bound.
 inline double ratio(const Rational& error, double bound) {
