@@ -14,13 +14,12 @@
 namespace rast::filters {
 namespace {
 
-using testing::Rational;
-using Points = std::array<double, 6>;  // px py qx qy rx ry
-
 using testing::climbs;
 using testing::Halved;
+using testing::Rational;
 using testing::Without;
 using testing::worst;
+using Points = std::array<double, 6>;  // px py qx qy rx ry
 
 Rational exact_det(const Points& c) {
     const Rational px(c[0]), py(c[1]);
@@ -69,24 +68,18 @@ std::vector<Points> underflow_cases(const std::vector<Points>& rounding) {
     return cases;
 }
 
-class OrientationBound : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        rounding_ = new std::vector<Points>(rounding_cases(climbs(200), 2026));
-        underflow_ = new std::vector<Points>(underflow_cases(*rounding_));
-    }
-    static void TearDownTestSuite() {
-        delete rounding_;
-        delete underflow_;
-    }
-    static std::vector<Points>* rounding_;
-    static std::vector<Points>* underflow_;
-};
-std::vector<Points>* OrientationBound::rounding_ = nullptr;
-std::vector<Points>* OrientationBound::underflow_ = nullptr;
+// Made once, shared by the tests below.
+const std::vector<Points>& rounding() {
+    static const std::vector<Points> cases = rounding_cases(climbs(200), 2026);
+    return cases;
+}
+const std::vector<Points>& underflow() {
+    static const std::vector<Points> cases = underflow_cases(rounding());
+    return cases;
+}
 
-TEST_F(OrientationBound, IsSoundOnAdversarialInputs) {
-    for (const auto* cases : {rounding_, underflow_})
+TEST(OrientationBound, IsSoundOnAdversarialInputs) {
+    for (const auto* cases : {&rounding(), &underflow()})
         for (const Points& c : *cases) {
             const Orientation o = evaluate(c);
             EXPECT_LE(error_ratio(c), 1.0);
@@ -95,19 +88,19 @@ TEST_F(OrientationBound, IsSoundOnAdversarialInputs) {
                 EXPECT_EQ(sign, exact.sign());
             }
         }
-    const double sound = worst(*rounding_, error_ratio<Sound>);
-    std::printf("orientation: worst error / bound %.3f (relative term, %zu climbs)\n", sound, rounding_->size());
-    RecordProperty("worst_ratio", std::to_string(sound));
+    const double sound = worst(rounding(), error_ratio<Sound>);
+    std::printf("orientation: worst error / bound %.3f (relative term, %zu climbs)\n", sound, rounding().size());
+    ::testing::Test::RecordProperty("worst_ratio", std::to_string(sound));
 }
 
-TEST_F(OrientationBound, HalvedFails) { EXPECT_GT(worst(*rounding_, error_ratio<Halved>), 1.0); }
+TEST(OrientationBound, HalvedFails) { EXPECT_GT(worst(rounding(), error_ratio<Halved>), 1.0); }
 
-TEST_F(OrientationBound, WithoutTheRelativeTermFails) {
-    EXPECT_GT(worst(*rounding_, error_ratio<Without<OrientationTerm::relative>>), 1.0);
+TEST(OrientationBound, WithoutTheRelativeTermFails) {
+    EXPECT_GT(worst(rounding(), error_ratio<Without<OrientationTerm::relative>>), 1.0);
 }
 
-TEST_F(OrientationBound, WithoutTheUnderflowTermFails) {
-    EXPECT_GT(worst(*underflow_, error_ratio<Without<OrientationTerm::underflow>>), 1.0);
+TEST(OrientationBound, WithoutTheUnderflowTermFails) {
+    EXPECT_GT(worst(underflow(), error_ratio<Without<OrientationTerm::underflow>>), 1.0);
 }
 
 // Hand-computed: p = (2^-53, 0), q = (1, 1), r = (2, 2). Exactly, det = (1 - 2^-53) 2 - 1 (2 - 2^-53) =
