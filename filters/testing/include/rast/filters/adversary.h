@@ -64,17 +64,18 @@ inline double nudge(double x, int k) {
     return x;
 }
 
-// Climbs from `inputs` toward a larger score(inputs): each step moves one input by 1 to 8 ulps either way
-// and keeps the move unless the score drops. Returns the best score; `inputs` holds its inputs.
-template <std::size_t N, class Score>
-double climb(std::array<double, N>& inputs, Score score, std::mt19937_64& rng, int steps) {
+// Climbs from `inputs` toward a larger score(inputs): each step moves one input by 1 to 8 units either
+// way, move(x, k) (ulps of a double unless the filter's inputs are rounded to a coarser type first), and
+// keeps the move unless the score drops. Returns the best score; `inputs` holds its inputs.
+template <std::size_t N, class Score, class Move = double (*)(double, int)>
+double climb(std::array<double, N>& inputs, Score score, std::mt19937_64& rng, int steps, Move move = nudge) {
     std::uniform_int_distribution<std::size_t> which(0, N - 1);
     std::uniform_int_distribution<int> ulps(1, 8), sign(0, 1);
     double best = score(inputs);
     for (int step = 0; step < steps; ++step) {
         const std::size_t k = which(rng);
         const double before = inputs[k];
-        inputs[k] = nudge(before, sign(rng) ? ulps(rng) : -ulps(rng));
+        inputs[k] = move(before, sign(rng) ? ulps(rng) : -ulps(rng));
         const double s = score(inputs);
         if (s >= best)
             best = s;
