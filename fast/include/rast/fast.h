@@ -114,12 +114,13 @@ std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int sam
 Triangle snap(const Triangle& t, Precision precision);
 
 // For the float modes: an upper bound on |E_computed(p) - E_exact(p)| over every sample p of the
-// viewport, for each edge E(p) = (b - a) x (p - a) of `t` (a, b the input doubles, any vertex order).
-// A sample can be classified differently from the reference only if |E_exact(p)| <= this bound for
-// some edge. Derived by standard error analysis of the evaluation (b.x - a.x) * (p.y - a.y) -
-// (b.y - a.y) * (p.x - a.x), each operation rounded to nearest in the mode's type (u = 2^-24 or 2^-53),
-// including the rounding of every input to float for float32. +infinity where the evaluation can
-// overflow; 0 for the fixed modes, which are exact on the snapped triangle.
+// viewport, for each edge E(p) = (b - a) x (p - a) of `t` (a, b the input doubles, any vertex order),
+// E_computed taken before the rounding of its last subtraction (which is monotone and keeps the sign, so
+// it never changes a classification). A sample can be classified differently from the reference only if
+// |E_exact(p)| <= this bound for some edge. Derived by standard error analysis of the evaluation
+// (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x), each operation rounded to nearest in the mode's
+// type (u = 2^-24 or 2^-53), including the rounding of every input to float for float32. +infinity where
+// the evaluation can overflow; 0 for the fixed modes, which are exact on the snapped triangle.
 double edge_error_bound(const Triangle& t, Precision precision, Viewport vp);
 
 // The same analysis at one sample (x, y), edge by edge: element k bounds |E_computed - E_exact| there for
