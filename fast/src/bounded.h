@@ -4,7 +4,13 @@
 // result that underflows into the subnormal range, where u·|result| no longer bounds it. (A sum or
 // difference of doubles that is subnormal is exact.) The bound arithmetic itself rounds, and second-order
 // terms are dropped; callers absorb both with kSlack on the final bound.
+//
+// Each operation's own rounding charge is multiplied by `w`, the weight its caller's Weights policy
+// (rast/filters/weights.h) gives that source of error: 1 in the engine, less in the tests that show the
+// charge is needed.
 #pragma once
+
+#include <rast/filters/weights.h>
 
 #include <cfloat>
 #include <cmath>
@@ -20,32 +26,45 @@ struct Bounded {
 inline constexpr double kUnitDouble = 0x1p-53;
 inline constexpr double kUnitFloat = 0x1p-24;
 // Relative margin on a final bound for the rounding of the bound's own computation and dropped u^2
-// terms: a few dozen operations contribute far less than 2^-20 relative.
+// terms (a few dozen operations contribute far less than 2^-20 relative), and for the rounding of the
+// comparison that uses it (a gap rounded against a rounded margin loses at most 2u of either: kernels.h).
 inline constexpr double kSlack = 1 + 0x1p-20;
 
 inline Bounded exact(double v) { return {v, 0}; }
 
-inline Bounded add(Bounded x, Bounded y) {
+// The sources of error of a value rounded to nearest from an exact one: half an ulp, at most u |z| in the
+// normal range, and at most half the least subnormal below it.
+enum class NearestTerm { rounding, underflow };
+
+// A bound on |z - Z| for z the double nearest the exact Z, rounded up (kSlack), weighed by W
+// (rast/filters/weights.h).
+template <class W = filters::Sound>
+double nearest_error(double z) {
+    return (W::weight(NearestTerm::rounding) * kUnitDouble * std::abs(z) +
+            W::weight(NearestTerm::underflow) * DBL_TRUE_MIN) * kSlack;
+}
+
+inline Bounded add(Bounded x, Bounded y, double w = 1) {
     const double v = x.v + y.v;
-    return {v, x.e + y.e + kUnitDouble * std::abs(v)};
+    return {v, x.e + y.e + w * kUnitDouble * std::abs(v)};
 }
 
-inline Bounded sub(Bounded x, Bounded y) {
+inline Bounded sub(Bounded x, Bounded y, double w = 1) {
     const double v = x.v - y.v;
-    return {v, x.e + y.e + kUnitDouble * std::abs(v)};
+    return {v, x.e + y.e + w * kUnitDouble * std::abs(v)};
 }
 
-inline Bounded mul(Bounded x, Bounded y) {
+inline Bounded mul(Bounded x, Bounded y, double w = 1) {
     const double v = x.v * y.v;
-    return {v, std::abs(x.v) * y.e + std::abs(y.v) * x.e + x.e * y.e + kUnitDouble * std::abs(v) + DBL_TRUE_MIN};
+    return {v, std::abs(x.v) * y.e + std::abs(y.v) * x.e + x.e * y.e + w * (kUnitDouble * std::abs(v) + DBL_TRUE_MIN)};
 }
 
 // |X/Y - x/y| <= (ex + |x/y| ey) / (|y| - ey) when |Y - y| <= ey < |y|; unbounded otherwise.
-inline Bounded div(Bounded x, Bounded y) {
+inline Bounded div(Bounded x, Bounded y, double w = 1) {
     const double v = x.v / y.v;
     if (!(std::abs(y.v) > y.e)) return {v, std::numeric_limits<double>::infinity()};
-    return {v, (x.e + std::abs(v) * (1 + kUnitDouble) * y.e) / (std::abs(y.v) - y.e) + kUnitDouble * std::abs(v) +
-                   DBL_TRUE_MIN};
+    return {v, (x.e + std::abs(v) * (1 + kUnitDouble) * y.e) / (std::abs(y.v) - y.e) +
+                   w * (kUnitDouble * std::abs(v) + DBL_TRUE_MIN)};
 }
 
 }  // namespace rast::fast::detail

@@ -311,16 +311,15 @@ inline constexpr std::size_t kFarRefresh = 4;
 
 // Hierarchical z: whether the triangle is behind everything stored in the tile at every sample of
 // [i0, i1] x [j0, j1]. Its plane's smallest value there is at a corner of the samples' rectangle (inside
-// the bounding box its error bound covers). As in the kernels' depth test, err and the stored err are
-// four times the bounds on the distance from the exact planes, which absorbs the rounding of the
-// comparison, and far + stored_err rounds to no less than any z stored when far was found plus its own
-// bound, and so bounds every exact stored depth since (they only come nearer): the exact depths are then
-// strictly ordered, and the triangle wins no sample.
+// the bounding box its error bound covers). far bounds every depth stored since it was found (they only
+// come nearer), and stored_err their distance from the exact depths; so, as in the kernels' depth test
+// (the gap beyond the margin, both rounded: kernels.h), the exact depths are strictly ordered, and the
+// triangle wins no sample.
 inline bool behind_tile(const Plane& p, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
     const double px = p.a >= 0 ? i0 + c.ox_min : i1 + c.ox_max;
     const double py = p.b >= 0 ? j0 + c.oy_min : j1 + c.oy_max;
     const double nearest = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
-    return nearest - p.err > tile.far + tile.stored_err;
+    return nearest - tile.far > p.err + tile.stored_err;
 }
 
 // Pixels [i0, i1] x [j0, j1] of the viewport: one tile.
@@ -360,11 +359,11 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
             }
         }
         if (!replace) continue;
-        // Where the plane or its error bound overflows, the exact depth rounded, with a bound of its own
-        // (an infinite one kept in the tile would send its later comparisons to exact arithmetic).
+        // Where the plane or its error bound overflows, the exact depth rounded to nearest, with a bound of
+        // its own (an infinite one kept in the tile would send its later comparisons to exact arithmetic).
         const bool bounded = std::isfinite(z) && p.err < std::numeric_limits<double>::infinity();
         tile.z[slot] = bounded ? z : tile.planes.depth(p.id, v, px, py);
-        tile.stored(slot, bounded ? p.err : 4 * kUnitDouble * kSlack * std::abs(tile.z[slot]) + 4 * DBL_TRUE_MIN);
+        tile.stored(slot, bounded ? p.err : nearest_error(tile.z[slot]));
         tile.ids[slot] = p.id;
     }
 }

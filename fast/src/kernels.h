@@ -95,11 +95,11 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 
 // For every covered sample, with the gap z' - z to the stored depth z' and the margin err + err', err' the
 // stored depth's bound: written (z, id, and err where DepthRows keeps bounds) when gap > margin (decided
-// nearer); left when gap < -margin (decided farther). Each bound is at least four times the distance from
-// the exact depth, so either decision, rounding of the gap and margin included, holds for the exact depths:
-// a rounded gap beyond the rounded margin leaves more than (1 - 2u) of it, and the two depths' errors
-// take at most a quarter. undecided[r] gets the rest of row r, for the exact comparison; returns whether
-// there are any.
+// nearer); left when gap < -margin (decided farther). Each bound is kSlack times the distance e from the
+// exact depth, so either decision, rounding of the gap and margin included, holds for the exact depths:
+// a rounded gap g beyond the rounded margin m has |z' - z| >= g / (1 + u) > m / (1 + u) >=
+// (e + e') kSlack (1 - u) / (1 + u) > e + e'. undecided[r] gets the rest of row r, for the exact
+// comparison; returns whether there are any.
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
                  std::uint64_t* undecided);
 

@@ -66,7 +66,7 @@ void NarrowPlanes(PlaneBatch& t, const PlaneGrid& g) {
         const BoundedLanes ty = term(b, reach(t.j_lo, g.oy_min, t.j_hi, g.oy_max, y0));
         const V sum = hn::Add(tx.v, ty.v), sum_e = hn::Add(hn::Add(tx.e, ty.e), hn::Mul(u, hn::Abs(sum)));
         const V z = hn::Add(hn::Abs(z0), sum), z_e = hn::Add(hn::Add(hn::Zero(d), sum_e), hn::Mul(u, hn::Abs(z)));
-        const V err = hn::Add(hn::Mul(hn::Mul(hn::Set(d, 4.0), z_e), hn::Set(d, kSlack)), hn::Set(d, 4 * DBL_TRUE_MIN));
+        const V err = hn::Mul(z_e, hn::Set(d, kSlack));
         hn::StoreU(a.v, d, t.a + k);
         hn::StoreU(b.v, d, t.b + k);
         hn::StoreU(hn::IfThenElse(hn::IsFinite(err), err, hn::Set(d, std::numeric_limits<double>::infinity())), d,

@@ -11,6 +11,7 @@
 
 #include <rast/fast.h>
 #include <rast/fast_faults.h>
+#include <rast/filters/weights.h>
 
 #include <algorithm>
 #include <array>
@@ -81,8 +82,9 @@ struct FloatEdge {
     bool inclusive;         // owns the samples exactly on it
 };
 
-// z(p) = z0 + (a (px - x0) + b (py - y0)) in double; err bounds 4x its distance from the exact plane over
-// the bounding box (the factor covers the rounding of the depth test, depth_block in kernels.h).
+// z(p) = z0 + (a (px - x0) + b (py - y0)) in double; err bounds its distance from the exact plane over
+// the bounding box, times kSlack (which also covers the rounding of the depth test, depth_block in
+// kernels.h).
 struct Plane {
     double x0, y0, z0, a, b, err;
 };
@@ -188,30 +190,39 @@ bool pixel_range(std::int64_t lo, std::int64_t hi, std::int64_t o_min, std::int6
     return clip_range<F>(size, first, last);
 }
 
+// The two sources of a plane's error (bounded.h's rounding charges, weighed by a Weights policy,
+// rast/filters/weights.h): the roundings that make the gradient (a, b), carried to every sample by the
+// distance from corner 0, and those of the evaluation at the sample.
+enum class PlaneTerm { gradient, evaluation };
+
 // The plane of gradient (a, b) through corner 0, with the bound of its evaluation
-// z0 + (a (px - x0) + b (py - y0)) over the box, from the magnitudes.
-inline Plane plane_over_box(const Placed& s, const Context& c, Bounded a, Bounded b) {
+// z0 + (a (px - x0) + b (py - y0)) over the box, from the magnitudes: at the box's far corner every
+// term is as large as it gets, and every one can be.
+template <class W = filters::Sound>
+Plane plane_over_box(const Placed& s, const Context& c, Bounded a, Bounded b) {
     const Corners& v = s.v;
-    const double u = kUnitDouble;
+    const double w = W::weight(PlaneTerm::evaluation), u = w * kUnitDouble;
     const double reach_x = std::max(std::abs(s.i_lo + c.ox_min - v[0].x), std::abs(s.i_hi + c.ox_max - v[0].x));
     const double reach_y = std::max(std::abs(s.j_lo + c.oy_min - v[0].y), std::abs(s.j_hi + c.oy_max - v[0].y));
-    const Bounded tx = mul({std::abs(a.v), a.e}, {reach_x, u * reach_x});
-    const Bounded ty = mul({std::abs(b.v), b.e}, {reach_y, u * reach_y});
-    const Bounded z = add(exact(std::abs(v[0].z)), add(tx, ty));
-    double err = 4 * z.e * kSlack + 4 * DBL_TRUE_MIN;
+    const Bounded tx = mul({std::abs(a.v), a.e}, {reach_x, u * reach_x}, w);
+    const Bounded ty = mul({std::abs(b.v), b.e}, {reach_y, u * reach_y}, w);
+    const Bounded z = add(exact(std::abs(v[0].z)), add(tx, ty, w), w);
+    double err = z.e * kSlack;
     if (!std::isfinite(err)) err = std::numeric_limits<double>::infinity();
     return {v[0].x, v[0].y, v[0].z, a.v, b.v, err};
 }
 
-inline Plane make_plane(const Placed& s, const Context& c) {
+template <class W = filters::Sound>
+Plane make_plane(const Placed& s, const Context& c) {
     const Corners& v = s.v;
-    const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x)), dy1 = sub(exact(v[1].y), exact(v[0].y));
-    const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x)), dy2 = sub(exact(v[2].y), exact(v[0].y));
-    const Bounded dz1 = sub(exact(v[1].z), exact(v[0].z)), dz2 = sub(exact(v[2].z), exact(v[0].z));
-    const Bounded det = sub(mul(dx1, dy2), mul(dx2, dy1));
-    const Bounded a = div(sub(mul(dz1, dy2), mul(dz2, dy1)), det);
-    const Bounded b = div(sub(mul(dx1, dz2), mul(dx2, dz1)), det);
-    return plane_over_box(s, c, a, b);
+    const double w = W::weight(PlaneTerm::gradient);
+    const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x), w), dy1 = sub(exact(v[1].y), exact(v[0].y), w);
+    const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x), w), dy2 = sub(exact(v[2].y), exact(v[0].y), w);
+    const Bounded dz1 = sub(exact(v[1].z), exact(v[0].z), w), dz2 = sub(exact(v[2].z), exact(v[0].z), w);
+    const Bounded det = sub(mul(dx1, dy2, w), mul(dx2, dy1, w), w);
+    const Bounded a = div(sub(mul(dz1, dy2, w), mul(dz2, dy1, w), w), det, w);
+    const Bounded b = div(sub(mul(dx1, dz2, w), mul(dx2, dz1, w), w), det, w);
+    return plane_over_box<W>(s, c, a, b);
 }
 
 // Snapping, winding, bounding box and path: nothing when the triangle covers no sample of the viewport.
