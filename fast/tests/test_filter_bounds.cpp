@@ -1,0 +1,288 @@
+// The fast path's own filters, held from both sides on adversarial inputs (filters/testing/adversary.h):
+// the depth plane's bound (setup.h, and the SIMD planes of planes.cpp) and the float modes' edge bound
+// (edge_bound.h). Sound: the exact error never exceeds the bound. Sharp: the bound halved, or with any
+// one of its terms dropped, fails on the same inputs. Worst ratios are printed for docs/filters.md.
+#include "edge_bound.h"
+#include "engine.h"
+#include "setup.h"
+
+#include <rast/filters/adversary.h>
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <algorithm>
+#include <array>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <random>
+#include <vector>
+
+namespace rast::fast::detail {
+namespace {
+
+using filters::Sound;
+using filters::testing::climb;
+using filters::testing::climbs;
+using filters::testing::Halved;
+using filters::testing::ratio;
+using filters::testing::Rational;
+using filters::testing::Without;
+using filters::testing::worst;
+
+// --- The depth plane ------------------------------------------------------------------------------
+
+// A triangle on the fixed8 grid whose depths the climb moves: its corners stay put, so that the
+// bounding box, and the samples where the bound's reach is attained, do too.
+struct PlaneCase {
+    std::array<double, 6> xy;
+    std::array<double, 3> z;
+};
+
+Triangle triangle_of(const PlaneCase& k) {
+    Triangle t;
+    for (int v = 0; v < 3; ++v) t.v[v] = {k.xy[2 * v], k.xy[2 * v + 1], k.z[v]};
+    return t;
+}
+
+const Context& plane_context() {
+    static const Context c = make_context<Fault::none>({1024, 1024}, 1, Precision::fixed8);
+    return c;
+}
+
+// The exact plane through the placed corners at (px, py).
+Rational exact_depth(const Corners& v, double px, double py) {
+    const Rational dx1 = Rational(v[1].x) - v[0].x, dy1 = Rational(v[1].y) - v[0].y;
+    const Rational dx2 = Rational(v[2].x) - v[0].x, dy2 = Rational(v[2].y) - v[0].y;
+    const Rational dz1 = Rational(v[1].z) - v[0].z, dz2 = Rational(v[2].z) - v[0].z;
+    const Rational det = dx1 * dy2 - dx2 * dy1;
+    return v[0].z + ((Rational(px) - v[0].x) * (dz1 * dy2 - dz2 * dy1) +
+                     (Rational(py) - v[0].y) * (dx1 * dz2 - dx2 * dz1)) / det;
+}
+
+// The largest error of the kernels' evaluation over the bound, at the corners of the samples' box, where
+// the bound's reach is attained.
+double plane_ratio(const Plane& p, const Placed& s) {
+    const Context& c = plane_context();
+    if (!(p.err < std::numeric_limits<double>::infinity())) return 0;
+    double largest = 0;
+    for (const double px : {s.i_lo + c.ox_min, s.i_hi + c.ox_max})
+        for (const double py : {s.j_lo + c.oy_min, s.j_hi + c.oy_max}) {
+            const double z = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+            largest = std::max(largest, ratio(abs(Rational(z) - exact_depth(s.v, px, py)), p.err));
+        }
+    return largest;
+}
+
+template <class W>
+double plane_ratio(const PlaneCase& k) {
+    const std::optional<Placed> s = place<Fault::none>(triangle_of(k), plane_context());
+    return s ? plane_ratio(make_plane<W>(*s, plane_context()), *s) : 0;
+}
+
+// Corners within 40 pixels of each other (narrow: the SIMD planes take them too), depths from three
+// families: near 1 with small slopes (the evaluation's last rounding is the whole error); steep slopes
+// whose numerators nearly cancel (the gradient's roundings, carried across the box, are); and
+// independent magnitudes.
+std::vector<PlaneCase> plane_cases(int count) {
+    std::mt19937_64 rng(20261126);
+    std::uniform_int_distribution<int> grid(0, 40 * 256), base(0, 900 * 256), ulps(-64, 64);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::vector<PlaneCase> cases;
+    for (int n = 0; n < count; ++n) {
+        PlaneCase k;
+        const double x = base(rng) / 256.0, y = base(rng) / 256.0;
+        for (int v = 0; v < 3; ++v) k.xy[2 * v] = x + grid(rng) / 256.0, k.xy[2 * v + 1] = y + grid(rng) / 256.0;
+        switch (n % 3) {
+            case 0:
+                for (double& z : k.z) z = 1 + ulps(rng) * 0x1p-52;
+                break;
+            case 1: {
+                // z1 - z0 and z2 - z0 in the ratio of the y differences, so that dz1 dy2 - dz2 dy1 cancels.
+                const double dz = std::ldexp(unit(rng), 10);
+                const double dy1 = k.xy[3] - k.xy[1], dy2 = k.xy[5] - k.xy[1];
+                k.z = {0, dz, dy1 != 0 ? dz * dy2 / dy1 : dz};
+                break;
+            }
+            default:
+                for (double& z : k.z) z = std::ldexp(unit(rng), ulps(rng) % 20);
+        }
+        climb(k.z, [&](const std::array<double, 3>& z) { return plane_ratio<Sound>(PlaneCase{k.xy, z}); }, rng, 200);
+        cases.push_back(k);
+    }
+    return cases;
+}
+
+const std::vector<PlaneCase>& plane_cases() {
+    static const std::vector<PlaneCase> cases = plane_cases(climbs(60));
+    return cases;
+}
+
+TEST(PlaneBound, IsSoundAndEveryTermBites) {
+    const double sound = worst(plane_cases(), plane_ratio<Sound>);
+    std::printf("plane: worst error / bound %.3f\n", sound);
+    EXPECT_LE(sound, 1.0);
+    EXPECT_GT(worst(plane_cases(), plane_ratio<Halved>), 1.0);
+    EXPECT_GT(worst(plane_cases(), plane_ratio<Without<PlaneTerm::gradient>>), 1.0);
+    EXPECT_GT(worst(plane_cases(), plane_ratio<Without<PlaneTerm::evaluation>>), 1.0);
+}
+
+// The SIMD planes of narrow triangles (planes.cpp) leave out only terms that are zero there: on every
+// target they hold on the same adversarial cases, and come as near the bound (so that halving theirs
+// fails too).
+TEST(PlaneBound, SmallPlanesAreSoundOnEveryTarget) {
+    const Context& c = plane_context();
+    std::vector<SmallFixed> records;
+    for (const PlaneCase& k : plane_cases()) {
+        SmallFixed record;
+        if (place_small_fixed<Fault::none>(triangle_of(k), 0, c, record) == Lane::small_fixed &&
+            narrow_edges(record, std::int64_t{1} << c.bits))
+            records.push_back(record);
+    }
+    ASSERT_GT(records.size(), plane_cases().size() / 2);
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        double largest = 0;
+        for (const SmallFixed& record : records) {
+            Plane plane;
+            bool narrow = false;
+            small_planes({&record, 1}, c, &plane, &narrow);
+            largest = std::max(largest, plane_ratio(plane, placed_of(record, c)));
+        }
+        hwy::SetSupportedTargetsForTest(0);
+        EXPECT_LE(largest, 1.0) << hwy::TargetName(target);
+        EXPECT_GT(largest, 0.5) << hwy::TargetName(target);
+    }
+}
+
+// Hierarchical z uses the bound as the depth test does (kernels.h): a triangle is behind a tile only when
+// its nearest computed depth is beyond the tile's far depth by more than the two bounds together. By
+// hand, nearest - far = f (err + stored_err): a margin scaled either way fails.
+TEST(PlaneBound, HierarchicalZDecidesExactlyBeyondTheMargin) {
+    const Context& c = plane_context();
+    TileBuffer tile;
+    tile.fit(1, 1, c.vp);
+    tile.stored_err = 3e-13;
+    tile.far = 0.25;
+    for (const double f : {-1.0, 0.5, 0.9, 0.99, 1.01, 1.1, 2.0}) {
+        // A flat plane: its nearest depth over any box is z0.
+        const Plane p{0, 0, tile.far + f * (1e-13 + tile.stored_err), 0, 0, 1e-13};
+        EXPECT_EQ(behind_tile(p, c, tile, 0, 3, 0, 3), f > 1) << "f = " << f;
+    }
+}
+
+// A depth the exact arithmetic rounded to nearest (stored where a plane's bound overflows), by hand: just
+// short of the midpoint above 1, whose nearest double is 1, the error is all but u; just short of half the
+// least subnormal, whose nearest double is 0, all but half of it.
+TEST(NearestBound, IsSoundAndEveryTermBites) {
+    struct Case {
+        double nearest;
+        Rational exact;
+    };
+    const Case cases[] = {{1, Rational(1) + Rational(0x1p-53) - Rational(0x1p-80)},
+                          {0, Rational(DBL_TRUE_MIN) / 2 - Rational(DBL_TRUE_MIN) / 1024}};
+    const auto worst_ratio = [&](auto bound) {
+        double largest = 0;
+        for (const Case& k : cases) largest = std::max(largest, ratio(abs(k.exact - k.nearest), bound(k.nearest)));
+        return largest;
+    };
+    EXPECT_LE(worst_ratio(nearest_error<Sound>), 1.0);
+    EXPECT_GT(worst_ratio(nearest_error<Halved>), 1.0);
+    EXPECT_GT(worst_ratio(nearest_error<Without<NearestTerm::rounding>>), 1.0);
+    EXPECT_GT(worst_ratio(nearest_error<Without<NearestTerm::underflow>>), 1.0);
+}
+
+// --- The float modes' edge function ----------------------------------------------------------------
+
+// Edge a -> b at sample p: ax, ay, bx, by, px, py, in a mode's type T.
+using EdgeCase = std::array<double, 6>;
+
+// fl(d1 d2) - fl(d3 d4) as the kernels compute it in T (scalar.h), before the last rounding.
+template <class T>
+Rational computed_edge(const EdgeCase& e) {
+    const T ax = T(e[0]), ay = T(e[1]), bx = T(e[2]), by = T(e[3]), px = T(e[4]), py = T(e[5]);
+    const T p1 = T(bx - ax) * T(py - ay), p2 = T(by - ay) * T(px - ax);
+    return Rational(double(p1)) - Rational(double(p2));
+}
+
+Rational exact_edge(const EdgeCase& e) {
+    return (Rational(e[2]) - e[0]) * (Rational(e[5]) - e[1]) - (Rational(e[3]) - e[1]) * (Rational(e[4]) - e[0]);
+}
+
+template <class W, class T>
+double edge_ratio(const EdgeCase& e) {
+    const Vertex a{e[0], e[1], 0}, b{e[2], e[3], 0};
+    const EdgeFormat& f = std::is_same_v<T, float> ? kFloat32Edges : kFloat64Edges;
+    const double bound = directed_edge_bound<W>(a, b, reach_at(a, e[4], e[5], f), f);
+    if (!(bound < std::numeric_limits<double>::infinity())) return 0;
+    const Rational computed = computed_edge<T>(e);
+    return ratio(abs(computed - exact_edge(e)), bound);
+}
+
+// Steps of the climb for float32 inputs: whole float ulps (a float stays a float), or sixteenths of one
+// (so that the inputs' own rounding to float moves too).
+double float_ulps(double x, int k) {
+    float f = float(x);
+    for (int n = 0; n < std::abs(k); ++n) f = std::nextafter(f, k > 0 ? FLT_MAX : -FLT_MAX);
+    return f;
+}
+
+double float_sixteenths(double x, int k) {
+    const float f = std::abs(float(x));
+    return x + k * double(std::nextafter(f, FLT_MAX) - f) / 16;
+}
+
+// Samples near the edge's line (the products cancel), and off it; coordinates of every magnitude, down to
+// where the products are subnormal in T; for float32, inputs with more bits than a float holds.
+template <class T>
+std::vector<EdgeCase> edge_cases(int count) {
+    std::mt19937_64 rng(std::is_same_v<T, float> ? 32 : 64);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    std::uniform_int_distribution<int> magnitude(-4, 30);
+    const int tiny = std::is_same_v<T, float> ? -80 : -560;
+    std::vector<EdgeCase> cases;
+    for (int n = 0; n < count; ++n) {
+        const int scale = n % 4 == 3 ? tiny + magnitude(rng) : magnitude(rng);
+        const bool floats = std::is_same_v<T, float> && n % 2 == 0;
+        const auto coordinate = [&] {
+            const double x = std::ldexp(unit(rng), scale);
+            return floats ? double(float(x)) : x;
+        };
+        EdgeCase e{coordinate(), coordinate(), coordinate(), coordinate(), 0, 0};
+        const double t = unit(rng), off = n % 3 == 0 ? unit(rng) : 0;
+        e[4] = e[0] + t * (e[2] - e[0]) - off * (e[3] - e[1]);
+        e[5] = e[1] + t * (e[3] - e[1]) + off * (e[2] - e[0]);
+        if (floats) {
+            for (double& x : e) x = float(x);
+            climb(e, edge_ratio<Sound, T>, rng, 300, float_ulps);
+        } else {
+            climb(e, edge_ratio<Sound, T>, rng, 300, std::is_same_v<T, float> ? float_sixteenths : filters::testing::nudge);
+        }
+        cases.push_back(e);
+    }
+    return cases;
+}
+
+template <class T>
+void expect_edge_bound_bites(const char* name) {
+    const std::vector<EdgeCase> cases = edge_cases<T>(climbs(80));
+    const double sound = worst(cases, edge_ratio<Sound, T>);
+    std::printf("%s edges: worst error / bound %.3f\n", name, sound);
+    EXPECT_LE(sound, 1.0);
+    EXPECT_GT(worst(cases, edge_ratio<Halved, T>), 1.0);
+    EXPECT_GT(worst(cases, edge_ratio<Without<EdgeTerm::difference>, T>), 1.0);
+    EXPECT_GT(worst(cases, edge_ratio<Without<EdgeTerm::product>, T>), 1.0);
+    EXPECT_GT(worst(cases, edge_ratio<Without<EdgeTerm::underflow>, T>), 1.0);
+    if (std::is_same_v<T, float>) {
+        EXPECT_GT(worst(cases, edge_ratio<Without<EdgeTerm::input>, T>), 1.0);
+    }
+}
+
+TEST(EdgeBound, Float32IsSoundAndEveryTermBites) { expect_edge_bound_bites<float>("float32"); }
+
+TEST(EdgeBound, Float64IsSoundAndEveryTermBites) { expect_edge_bound_bites<double>("float64"); }
+
+}  // namespace
+}  // namespace rast::fast::detail
