@@ -19,16 +19,17 @@ namespace {
 namespace fs = std::filesystem;
 using rast::cli::CaseReport;
 
-// fixed8 with bottom instead of top edges owning their samples.
-rast::properties::Engine broken_fixed8() {
-    using rast::fast::Fault;
+using rast::fast::Fault;
+
+// fixed8 with a bug injected: by default, bottom instead of top edges owning their samples.
+rast::properties::Engine broken_fixed8(Fault fault = Fault::wrong_tie_bias) {
     using rast::fast::Precision;
     rast::properties::Engine engine = rast::properties::fast_engine(Precision::fixed8);
-    engine.render = [](const rast::Scene& s) {
-        return rast::fast::render_with_fault(s, {Precision::fixed8, 1}, Fault::wrong_tie_bias);
+    engine.render = [fault](const rast::Scene& s) {
+        return rast::fast::render_with_fault(s, {Precision::fixed8, 1}, fault);
     };
-    engine.covered_samples = [](const rast::Triangle& t, rast::Viewport vp, int n) {
-        return rast::fast::covered_samples_with_fault(t, vp, n, Precision::fixed8, Fault::wrong_tie_bias);
+    engine.covered_samples = [fault](const rast::Triangle& t, rast::Viewport vp, int n) {
+        return rast::fast::covered_samples_with_fault(t, vp, n, Precision::fixed8, fault);
     };
     return engine;
 }
@@ -81,6 +82,24 @@ TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix
     EXPECT_EQ(fixed.status, CaseReport::Status::pass) << fixed.line;
     // tie_rule applies to the exact engines: the reference and the three fixed modes.
     EXPECT_EQ(fixed.line, "PASS " + file.string() + " (1 properties x 6 engines: 4 checks, 0 not applicable)");
+}
+
+// corpus/filters keeps scenes on which a weakened error bound changes a framebuffer (docs/filters.md). The
+// coplanar twins pass on every engine, and fail on the fast path with its depth planes' bounds halved:
+// triangle 1 drawn at the centre (16.5, 17.5), where the depth tie belongs to triangle 0.
+TEST_F(Replay, HalvedDepthBoundFailsTheCoplanarTwins) {
+    const fs::path file = fs::path(RAST_CORPUS_DIR) / "filters" / "depth-halved-orders-coplanar-twins.tri";
+    const CaseReport sound = rast::cli::replay_case(file, rast::properties::all_engines());
+    EXPECT_EQ(sound.status, CaseReport::Status::pass) << sound.line;
+    const std::vector<rast::properties::Engine> with_bug{rast::properties::reference_engine(),
+                                                        broken_fixed8(Fault::halved_depth_bound)};
+    const CaseReport halved = rast::cli::replay_case(file, with_bug);
+    ASSERT_EQ(halved.status, CaseReport::Status::fail) << halved.line;
+    bool at_the_twins_sample = false;
+    for (const auto& f : halved.failures)
+        at_the_twins_sample = at_the_twins_sample ||
+                              (f.property == "fixed_matches_reference" && f.detail.find("(16.5, 17.5)") != std::string::npos);
+    EXPECT_TRUE(at_the_twins_sample) << halved.line;
 }
 
 TEST_F(Replay, HeaderErrorsNameTheLine) {

@@ -378,6 +378,11 @@ template <Fault F, class CornersOf, class BlockDepth>
 [[gnu::always_inline]] inline void rasterize_blocks(CornersOf corners, const Plane& pl, std::int32_t id, int i0,
                                                     int i1, int j0, int j1, const TileRect& rect, TileBuffer& tile,
                                                     const SceneView& scene, BlockDepth depth) {
+    if constexpr (F == Fault::halved_depth_bound) {
+        Plane halved = pl;
+        halved.err /= 2;
+        return rasterize_blocks<Fault::none>(corners, halved, id, i0, i1, j0, j1, rect, tile, scene, depth);
+    }
     const Context& c = scene.c;
     if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return;
     tile.since_far += static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size();

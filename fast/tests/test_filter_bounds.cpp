@@ -157,6 +157,42 @@ TEST(PlaneBound, SmallPlanesAreSoundOnEveryTarget) {
     }
 }
 
+// The depth test compares two planes' depths against the sum of their bounds: for a halved bound to change
+// a framebuffer, two computed depths must be wrong by more than half of both bounds together. Coplanar
+// twins (one triangle, another first corner) make every exact gap 0; with depths just above 1 and gentle
+// slopes, each bound is close to u, and now and then the twins' values straddle a rounding midpoint: a
+// gap of one ulp, 2u, at a covered sample. The generator of corpus/filters/depth-halved-orders-coplanar-
+// twins.tri: such twins turn up within a few thousand triangles, and their gap exceeds the halved bounds.
+TEST(PlaneBound, CoplanarTwinsStraddleAMidpoint) {
+    const Context& c = plane_context();
+    std::mt19937_64 rng(3);
+    std::uniform_int_distribution<int> grid(0, 40 * 256);
+    std::uniform_int_distribution<std::int64_t> base(0, 1 << 20), rise(0, std::int64_t{1} << 34);
+    const auto depth_at = [](const Plane& p, double px, double py) {
+        return p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+    };
+    double largest = 0, halved = 0;
+    for (int n = 0; n < 20000 && halved <= 1; ++n) {
+        Triangle t;
+        const double z0 = 1 + base(rng) * 0x1p-52;
+        for (int v = 0; v < 3; ++v) t.v[v] = {grid(rng) / 256.0, grid(rng) / 256.0, z0 + (v == 0 ? 0 : rise(rng) * 0x1p-52)};
+        const Triangle twin{{t.v[1], t.v[2], t.v[0]}};
+        const std::optional<Placed> s = place<Fault::none>(t, c), w = place<Fault::none>(twin, c);
+        if (!s || !w) continue;
+        const Plane p = make_plane(*s, c), q = make_plane(*w, c);
+        const double margin = make_plane<Halved>(*s, c).err + make_plane<Halved>(*w, c).err;
+        for (const std::size_t at : covered_samples(t, c.vp, 1, Precision::fixed8)) {
+            const double px = double(at % c.vp.width) + 0.5, py = double(at / c.vp.width) + 0.5;
+            const double gap = std::abs(depth_at(p, px, py) - depth_at(q, px, py));
+            largest = std::max(largest, gap / (p.err + q.err));
+            halved = std::max(halved, gap / margin);
+        }
+    }
+    std::printf("coplanar twins: largest gap / summed bounds %.3f\n", largest);
+    EXPECT_LE(largest, 1.0);
+    EXPECT_GT(halved, 1.0);
+}
+
 // Hierarchical z uses the bound as the depth test does (kernels.h): a triangle is behind a tile only when
 // its nearest computed depth is beyond the tile's far depth by more than the two bounds together. By
 // hand, nearest - far = f (err + stored_err): a margin scaled either way fails.

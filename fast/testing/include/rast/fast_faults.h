@@ -18,6 +18,7 @@ enum class Fault {
     no_id_tiebreak,            // equal exact depths: the last drawn triangle wins instead of the lower id
     bbox_one_short,            // the bounding box misses its last column and row of pixels
     float_row_accumulation,    // float modes: the edge function stepped along a row by repeated addition
+    halved_depth_bound,        // every depth plane's error bound halved (docs/filters.md)
 };
 
 Framebuffer render_with_fault(const Scene& scene, const Options& options, Fault fault);
