@@ -14,9 +14,7 @@ namespace rast::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using properties::Engine;
 using properties::Failure;
-using properties::Outcome;
 using properties::Property;
 
 // A problem with the case file itself rather than with an engine.
@@ -180,39 +178,20 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
 
     if (doc.scene.triangles.empty()) return error_report(file, {0, "has no triangle: it tests nothing"});
 
-    std::vector<Failure> failures;
-    std::size_t checks = 0, not_applicable = 0;
-    std::string unchecked;  // the first named property that every engine it applies to found not applicable
-    for (const Property* p : selected) {
-        bool applies = false, checked = false;
-        std::string why_not_here;
-        for (const Engine& engine : engines) {
-            if (!p->applies_to(engine)) continue;
-            applies = true;
-            Outcome outcome = p->verdict_on(doc.scene, engine);
-            if (outcome.verdict == Outcome::Verdict::not_applicable) {
-                ++not_applicable;
-                if (why_not_here.empty())
-                    why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
-                continue;
-            }
-            ++checks;
-            checked = true;
-            if (outcome.failed()) failures.push_back({std::string(p->name), engine.name, std::move(outcome.detail)});
-        }
-        if (applies && !checked && unchecked.empty()) unchecked = why_not_here;
-    }
+    properties::CaseCheck result = properties::check_case(doc.scene, selected, engines);
+    std::vector<Failure>& failures = result.failures;
     if (!failures.empty()) return {CaseReport::Status::fail, fail_line(file, failures), std::move(failures)};
     // A property named in the header holds for the case by construction (corpus/README.md): one that no
     // engine can check here claims what the case does not test.
-    if (!unchecked.empty())
-        return error_report(file,
-                            {header_line(text, "properties"), "a named property checks nothing (" + unchecked + ")"});
+    if (!result.unchecked.empty())
+        return error_report(file, {header_line(text, "properties"),
+                                   "a named property checks nothing (" + result.unchecked + ")"});
     // Left: no named property applies to any of the engines replayed.
-    if (checks == 0)
+    if (result.checks == 0)
         return error_report(file,
                             {header_line(text, "properties"), "checks nothing: no named property applies to any engine"});
-    return {CaseReport::Status::pass, pass_line(file, selected.size(), engines.size(), checks, not_applicable), {}};
+    return {CaseReport::Status::pass,
+            pass_line(file, selected.size(), engines.size(), result.checks, result.not_applicable), {}};
 }
 
 }  // namespace rast::cli

@@ -40,9 +40,9 @@ struct CaseReport {
 // Reads the case, runs each property of its "# properties:" header on each engine it applies to. A file
 // that cannot be read, is malformed, names no property, an unknown one or one twice, or whose properties
 // apply to none of the engines (it would check nothing) is an error.
-CaseReport replay_case(const std::filesystem::path& file, std::span<const properties::Engine> engines);
+CaseReport replay_case(const std::filesystem::path& file, std::span<const Engine> engines);
 
 // replay_case for a file; for a folder that could not be listed, an error that says why.
-CaseReport replay_entry(const CorpusEntry& entry, std::span<const properties::Engine> engines);
+CaseReport replay_entry(const CorpusEntry& entry, std::span<const Engine> engines);
 
 }  // namespace rast::cli

@@ -22,7 +22,7 @@ void add_replay_command(CLI::App& app, int& status) {
     cmd->add_option("PATH", *paths, "Case files or folders")->default_str("corpus");
     cmd->callback([paths, &status] {
         if (paths->empty()) paths->push_back("corpus");
-        const auto engines = properties::all_engines();
+        const auto engines = all_engines();
         const auto files = corpus_files(*paths);
         if (files.empty()) throw std::runtime_error("no .tri case found: nothing to replay");
         std::size_t passed = 0, failed = 0;

@@ -22,11 +22,11 @@ using rast::cli::CaseReport;
 using rast::fast::Fault;
 
 // fixed8 with a bug injected: by default, bottom instead of top edges owning their samples.
-rast::properties::Engine broken_fixed8(Fault fault = Fault::wrong_tie_bias) {
+rast::Engine broken_fixed8(Fault fault = Fault::wrong_tie_bias) {
     using rast::fast::Precision;
-    rast::properties::Engine engine = rast::properties::fast_engine(Precision::fixed8);
-    engine.render = [fault](const rast::Scene& s) {
-        return rast::fast::render_with_fault(s, {Precision::fixed8, 1}, fault);
+    rast::Engine engine = rast::fast_engine(Precision::fixed8);
+    engine.draw = [fault](const rast::Scene& s, rast::Framebuffer& fb) {
+        fb = rast::fast::render_with_fault(s, {Precision::fixed8, 1}, fault);
     };
     engine.covered_samples = [fault](const rast::Triangle& t, rast::Viewport vp, int n) {
         return rast::fast::covered_samples_with_fault(t, vp, n, Precision::fixed8, fault);
@@ -59,7 +59,7 @@ protected:
 };
 
 TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix) {
-    const rast::properties::Engine broken = broken_fixed8();
+    const rast::Engine broken = broken_fixed8();
     const auto outcome = rast::properties::property("tie_rule").check(horizontal_split(), broken);
     ASSERT_TRUE(outcome.failed());
 
@@ -67,7 +67,7 @@ TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix
     rast::write_tri_file(file, horizontal_split(),
                          {{"properties", "tie_rule"}, {"why", "bottom edges own samples in the broken engine"}});
 
-    const std::vector<rast::properties::Engine> with_bug{rast::properties::reference_engine(), broken};
+    const std::vector<rast::Engine> with_bug{rast::reference_engine(), broken};
     const CaseReport failing = rast::cli::replay_case(file, with_bug);
     ASSERT_EQ(failing.status, CaseReport::Status::fail) << failing.line;
     ASSERT_EQ(failing.failures.size(), 1u);
@@ -78,7 +78,7 @@ TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix
     // The first differing sample is the centre (0.5, 1.5): on the shared line, owned by the lower triangle.
     EXPECT_NE(failing.line.find("at (0.5, 1.5)"), std::string::npos) << failing.line;
 
-    const CaseReport fixed = rast::cli::replay_case(file, rast::properties::all_engines());
+    const CaseReport fixed = rast::cli::replay_case(file, rast::all_engines());
     EXPECT_EQ(fixed.status, CaseReport::Status::pass) << fixed.line;
     // tie_rule applies to the exact engines: the reference and the three fixed modes.
     EXPECT_EQ(fixed.line, "PASS " + file.string() + " (1 properties x 6 engines: 4 checks, 0 not applicable)");
@@ -89,9 +89,9 @@ TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix
 // triangle 1 drawn at the centre (16.5, 17.5), where the depth tie belongs to triangle 0.
 TEST_F(Replay, HalvedDepthBoundFailsTheCoplanarTwins) {
     const fs::path file = fs::path(RAST_CORPUS_DIR) / "filters" / "depth-halved-orders-coplanar-twins.tri";
-    const CaseReport sound = rast::cli::replay_case(file, rast::properties::all_engines());
+    const CaseReport sound = rast::cli::replay_case(file, rast::all_engines());
     EXPECT_EQ(sound.status, CaseReport::Status::pass) << sound.line;
-    const std::vector<rast::properties::Engine> with_bug{rast::properties::reference_engine(),
+    const std::vector<rast::Engine> with_bug{rast::reference_engine(),
                                                         broken_fixed8(Fault::halved_depth_bound)};
     const CaseReport halved = rast::cli::replay_case(file, with_bug);
     ASSERT_EQ(halved.status, CaseReport::Status::fail) << halved.line;
@@ -107,7 +107,7 @@ TEST_F(Replay, HeaderErrorsNameTheLine) {
     std::ofstream(dir / "twice.tri") << "# properties: tie_rule tie_rule\nviewport 2 2\n";
     std::ofstream(dir / "none.tri") << "# why: forgot the properties\nviewport 2 2\n";
     std::ofstream(dir / "late.tri") << "viewport 2 2\n# properties: tie_rule\ntri 0 0 0  2 0 0  0 2 0\n";
-    const auto engines = rast::properties::all_engines();
+    const auto engines = rast::all_engines();
 
     const CaseReport unknown = rast::cli::replay_case(dir / "unknown.tri", engines);
     EXPECT_EQ(unknown.status, CaseReport::Status::error);
@@ -130,7 +130,7 @@ TEST_F(Replay, CasesThatTestNothingAreErrors) {
     std::ofstream(dir / "unchecked.tri") << "# why: a vertex at 2^60\n# properties: tie_rule translation_invariance\n"
                                             "viewport 8 8\ntri 0.5 0.5 0  7.5 0.5 0  0x1p+60 0x1.0000000000001p+60 0\n";
     std::ofstream(dir / "empty.tri") << "# properties: tie_rule\nviewport 2 2\n";
-    const auto engines = rast::properties::all_engines();
+    const auto engines = rast::all_engines();
     EXPECT_EQ(rast::cli::replay_case(dir / "unchecked.tri", engines).line,
               "ERROR " + (dir / "unchecked.tri").string() +
                   ":2: a named property checks nothing (translation_invariance [reference]: no whole-pixel shift "
@@ -139,7 +139,7 @@ TEST_F(Replay, CasesThatTestNothingAreErrors) {
               "ERROR " + (dir / "empty.tri").string() + ": has no triangle: it tests nothing");
     // Replayed on the reference alone, a float mode's property applies to no engine.
     std::ofstream(dir / "float.tri") << "# properties: float_within_bound\nviewport 2 2\ntri 0 0 0  2 0 0  0 2 0\n";
-    EXPECT_EQ(rast::cli::replay_case(dir / "float.tri", std::vector{rast::properties::reference_engine()}).line,
+    EXPECT_EQ(rast::cli::replay_case(dir / "float.tri", std::vector{rast::reference_engine()}).line,
               "ERROR " + (dir / "float.tri").string() + ":1: checks nothing: no named property applies to any engine");
     // A folder given as a case (corpus_files lists folders, replay_case reads files).
     EXPECT_EQ(rast::cli::replay_case(dir, engines).line, "ERROR " + dir.string() + ": is a folder, not a case");
@@ -172,7 +172,7 @@ void list_beside_locked_folders(const fs::path& dir) {
         std::_Exit(1);
     const std::vector<fs::path> unentered_given{unentered};
     if (rast::cli::corpus_files(unentered_given) != std::vector<CorpusEntry>{{unentered, {}}}) std::_Exit(2);
-    const auto engines = rast::properties::all_engines();
+    const auto engines = rast::all_engines();
     const std::string expected[] = {
         "ERROR " + (dir / "gone.tri").string() + ": cannot open: No such file or directory",
         "ERROR " + (dir / "link.tri").string() + ": cannot open: Permission denied",

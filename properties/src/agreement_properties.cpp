@@ -15,7 +15,7 @@ namespace rast::properties {
 // same rendered ids, bit for bit. (Depth values are the fast path's double plane values, not
 // promised bit-exact; the (z, id) decisions they lead to are.)
 Outcome fixed_matches_reference(const Scene& scene, const Engine& engine) {
-    const Scene snapped = engine.rasterized_geometry(scene);
+    const Scene snapped = rasterized_geometry(engine, scene);
     const Viewport vp = scene.viewport;
     for (std::size_t k = 0; k < scene.triangles.size(); ++k)
         if (auto diff = first_difference(engine.covered_samples(scene.triangles[k], vp, scene.samples), engine.name,
@@ -67,7 +67,7 @@ Outcome float_within_bound(const Scene& scene, const Engine& engine) {
 // With several samples per pixel, the number of covered samples in each pixel of the rendered image
 // equals the number the exact tie rule covers on the geometry the engine rasterizes.
 Outcome msaa_counts(const Scene& scene, const Engine& engine) {
-    const Scene geometry = engine.rasterized_geometry(scene);
+    const Scene geometry = rasterized_geometry(engine, scene);
     const Viewport vp = scene.viewport;
     const int n = scene.samples;
     std::vector<char> covered(sample_count(vp, n), 0);

@@ -34,7 +34,7 @@ bool strictly_inside_pixel(const SamplePoint& p) { return p.x > 0 && p.x < 1 && 
 // area; no pixel is covered more than once over; a pixel covered entirely has every sample inside it
 // covered, and a pixel not covered at all has none of them covered.
 Outcome area_tiling(const Scene& scene, const Engine& engine) {
-    const Scene geometry = engine.rasterized_geometry(scene);
+    const Scene geometry = rasterized_geometry(engine, scene);
     if (const auto k = folded_by_snapping(scene, geometry))
         return Outcome::not_applicable("snapping to the " + engine.name + " grid folds triangle " +
                                        describe(scene.triangles[*k], *k));

@@ -34,7 +34,7 @@ std::optional<std::size_t> folded_by_snapping(const Scene& scene, const Scene& g
 // boundary edge (an edge of only one non-degenerate triangle) is covered exactly once; no sample is
 // covered twice; no sample outside the union is covered.
 Outcome watertight(const Scene& scene, const Engine& engine) {
-    const Scene geometry = engine.rasterized_geometry(scene);
+    const Scene geometry = rasterized_geometry(engine, scene);
     if (const auto k = folded_by_snapping(scene, geometry))
         return Outcome::not_applicable("snapping to the " + engine.name + " grid folds triangle " +
                                        describe(scene.triangles[*k], *k));
@@ -87,7 +87,7 @@ Outcome watertight(const Scene& scene, const Engine& engine) {
 // Each triangle covers exactly the samples docs/design.md's rule gives it: strictly inside, or on a
 // left or top edge, or on a vertex whose two edges are both left or top.
 Outcome tie_rule(const Scene& scene, const Engine& engine) {
-    const Scene geometry = engine.rasterized_geometry(scene);
+    const Scene geometry = rasterized_geometry(engine, scene);
     const Viewport vp = scene.viewport;
     for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
         const Triangle& t = geometry.triangles[k];

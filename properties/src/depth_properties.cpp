@@ -43,7 +43,7 @@ std::vector<std::vector<std::size_t>> draw_orders(std::size_t n) {
 // that draw order.
 Outcome order_independence(const Scene& scene, const Engine& engine) {
     const std::size_t count = scene.triangles.size();
-    const Scene geometry = engine.rasterized_geometry(scene);
+    const Scene geometry = rasterized_geometry(engine, scene);
     std::vector<Framebuffer> alone;
     for (const Triangle& t : scene.triangles) alone.push_back(engine.render(Scene{scene.viewport, scene.samples, {t}}));
 

@@ -13,6 +13,9 @@ Rational edge_function(const Vertex& a, const Vertex& b, double px, double py) {
 }
 
 int edge_sign(const Vertex& a, const Vertex& b, double px, double py) {
+    // The oracle's own filter, on purpose not the engines' (rast/filters/orientation.h): a wrong bound
+    // there must not make the judge agree with the engines it judges. It filters differently too (the
+    // products of (a - p) and (b - p), with no underflow term, small sums sent to exact arithmetic).
     // Shewchuk's orient2d stage A: with left = (a - p) x-part products formed in doubles, the sign of
     // left - right is right once |det| exceeds (3 + 16 eps) eps (|left| + |right|). The bound assumes no
     // underflow and no overflow, so tiny and non-finite sums go to the exact path.

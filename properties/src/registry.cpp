@@ -50,17 +50,33 @@ const Property& property(std::string_view name) {
     throw std::invalid_argument("unknown property '" + std::string(name) + "' (known: " + known + ")");
 }
 
+CaseCheck check_case(const Scene& scene, std::span<const Property* const> properties, std::span<const Engine> engines) {
+    CaseCheck result;
+    for (const Property* p : properties) {
+        bool applies = false, checked = false;
+        std::string why_not_here;
+        for (const Engine& engine : engines) {
+            if (!p->applies_to(engine)) continue;
+            applies = true;
+            Outcome outcome = p->verdict_on(scene, engine);
+            if (outcome.verdict == Outcome::Verdict::not_applicable) {
+                ++result.not_applicable;
+                if (why_not_here.empty()) why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
+                continue;
+            }
+            ++result.checks;
+            checked = true;
+            if (outcome.failed()) result.failures.push_back({std::string(p->name), engine.name, std::move(outcome.detail)});
+        }
+        if (applies && !checked && result.unchecked.empty()) result.unchecked = why_not_here;
+    }
+    return result;
+}
+
 std::vector<Failure> check_case(const Scene& scene, std::span<const std::string> property_names) {
     std::vector<const Property*> selected;
     for (const std::string& name : property_names) selected.push_back(&property(name));
-    const std::vector<Engine> engines = all_engines();
-    std::vector<Failure> failures;
-    for (const Property* p : selected)
-        for (const Engine& engine : engines)
-            if (p->applies_to(engine))
-                if (Outcome o = p->verdict_on(scene, engine); o.failed())
-                    failures.push_back({std::string(p->name), engine.name, std::move(o.detail)});
-    return failures;
+    return check_case(scene, selected, all_engines()).failures;
 }
 
 }  // namespace rast::properties

@@ -24,7 +24,7 @@ using rast::Triangle;
 using rast::Viewport;
 using rast::fast::Fault;
 using rast::fast::Precision;
-using rast::properties::Engine;
+using rast::Engine;
 
 // Broken variants written here, for the two properties that no fault inside the fast path breaks: the
 // wrapper changes what the fast path is given, as a careless caller or setup stage would.
@@ -61,7 +61,7 @@ Triangle culled(const Triangle& t) {
 
 // Whether some sample is covered by two triangles (by the reference's coverage).
 bool has_overlap(const Scene& s) {
-    const Engine reference = rast::properties::reference_engine();
+    const Engine reference = rast::reference_engine();
     std::set<std::size_t> seen;
     for (const Triangle& t : s.triangles)
         for (const std::size_t sample : reference.covered_samples(t, s.viewport, s.samples))
@@ -70,16 +70,16 @@ bool has_overlap(const Scene& s) {
 }
 
 Engine broken(const Bite& b) {
-    Engine e = rast::properties::fast_engine(b.precision);
+    Engine e = rast::fast_engine(b.precision);
     const auto given = [w = b.wrapper](const Triangle& t) {
         return w == Wrapper::culling_left_on ? culled(t) : w == Wrapper::snap_by_truncation ? cut_toward_zero(t) : t;
     };
-    e.render = [b, given](const Scene& s) {
+    e.draw = [b, given](const Scene& s, Framebuffer& fb) {
         if (b.wrapper == Wrapper::throws_on_overlap && has_overlap(s))
             throw std::runtime_error("the engine gave up on overlapping triangles");
         Scene seen = s;
         for (Triangle& t : seen.triangles) t = given(t);
-        return rast::fast::render_with_fault(seen, {b.precision, 1}, b.fault);
+        fb = rast::fast::render_with_fault(seen, {b.precision, 1}, b.fault);
     };
     e.covered_samples = [b, given](const Triangle& t, Viewport vp, int n) {
         return rast::fast::covered_samples_with_fault(given(t), vp, n, b.precision, b.fault);

@@ -13,6 +13,7 @@
 namespace {
 
 using namespace rast::properties;
+using rast::reference_engine;
 using rast::Scene;
 using rast::Triangle;
 using rast::Vertex;

@@ -27,10 +27,10 @@ rc::Gen<Scene> scenes_for(std::string_view property) {
     return gen::any_scene();
 }
 
-void hold(std::string_view name, const Scene& scene, std::span<const properties::Engine> engines) {
+void hold(std::string_view name, const Scene& scene, std::span<const Engine> engines) {
     const properties::Property& p = properties::property(name);
     bool checked = false;
-    for (const properties::Engine& engine : engines) {
+    for (const Engine& engine : engines) {
         if (!p.applies_to(engine)) continue;
         // An engine that throws is a failure whose scene is kept too.
         const properties::Outcome outcome = p.verdict_on(scene, engine);

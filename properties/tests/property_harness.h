@@ -19,7 +19,7 @@ rc::Gen<Scene> scenes_for(std::string_view property);
 // Inside a RapidCheck case: checks the property on every engine it applies to. On a failure, keeps the
 // scene (keep_counterexample) and fails the case with the property's description; when the property
 // applies to none of the engines for this scene, discards the case.
-void hold(std::string_view property, const Scene& scene, std::span<const properties::Engine> engines);
+void hold(std::string_view property, const Scene& scene, std::span<const Engine> engines);
 
 // Writes the scene atomically to <dir>/<property>-<seed>.tri, dir being $RAST_CORPUS_OUT or else the
 // source tree's corpus/found, with a header naming the property, the engine, the seed, what failed and

@@ -11,8 +11,8 @@ namespace {
 using rast::harness::hold;
 using rast::harness::scenes_for;
 
-const std::vector<rast::properties::Engine>& engines() {
-    static const auto all = rast::properties::all_engines();
+const std::vector<rast::Engine>& engines() {
+    static const auto all = rast::all_engines();
     return all;
 }
 

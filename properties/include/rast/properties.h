@@ -6,6 +6,7 @@
 // rasterize exactly.
 #pragma once
 
+#include <rast/engine.h>
 #include <rast/fast.h>
 #include <rast/scene.h>
 
@@ -21,33 +22,14 @@
 
 namespace rast::properties {
 
-// One rasterizer under test: the exact reference or the fast path in one precision mode. The functions
-// are replaceable so that the bite tests can substitute a deliberately broken fast path.
-struct Engine {
-    std::string name;                          // "reference", "fixed8", "float32", ...
-    std::optional<fast::Precision> precision;  // none for the reference
-    std::function<Framebuffer(const Scene&)> render;
-    std::function<std::vector<std::size_t>(const Triangle&, Viewport, int samples)> covered_samples;
-    // Float modes: fast::edge_error_bound_at, the slack each edge function of the engine may have at a sample.
-    std::function<std::array<double, 3>(const Triangle&, double x, double y)> edge_error_bound_at;
+// The engines under test are rast::Engine (rast/engine.h): the reference, the fast path in each
+// precision, or a deliberately broken fast path in the bite tests.
+using rast::Engine;
 
-    // Exact engines classify every sample exactly on the geometry they rasterize (reference, fixed N).
-    bool exact() const;
-    // Only the reference promises depths bit for bit (the exact depth rounded to nearest); the fast
-    // path writes its double plane value, within a few ulps. Every engine decides the (z, id) order
-    // exactly, so the id buffer is exact everywhere.
-    bool exact_depth() const { return !precision; }
-    // The fixed modes' grid, 2^-bits of a pixel; none for the others.
-    std::optional<int> snap_bits() const;
-    // The geometry whose samples this engine must classify exactly: the scene itself, or its vertices
-    // snapped to the engine's grid.
-    Scene rasterized_geometry(const Scene& scene) const;
-};
-
-Engine reference_engine();
-Engine fast_engine(fast::Precision precision);
-// The reference followed by the fast path in every precision mode.
-std::vector<Engine> all_engines();
+// The geometry whose samples `engine` must classify exactly: the scene itself, or its vertices snapped to
+// the engine's grid by the oracle's own snap (exact_geometry.h), not the fast path's.
+Scene rasterized_geometry(const Engine& engine, const Scene& scene);
+Triangle rasterized_geometry(const Engine& engine, const Triangle& t);
 
 // What a property concluded. `detail` says, for a failure, what differs and where (pixel i, j, sample s,
 // what each side said); for `not_applicable`, which precondition the scene does not meet.
@@ -85,7 +67,19 @@ struct Failure {
     std::string detail;
 };
 
-// Runs each named property on every engine it applies to; the failures, in property then engine order.
+// What properties concluded on one scene, each on every engine it applies to.
+struct CaseCheck {
+    std::vector<Failure> failures;   // in property then engine order
+    std::size_t checks = 0;          // property and engine pairs that passed or failed
+    std::size_t not_applicable = 0;  // pairs whose scene the property does not apply to
+    // The first property that applies to some engine but could check the scene on none of them, as
+    // "name [engine]: why": a case that names it claims what it does not test. Empty when there is none.
+    std::string unchecked;
+};
+
+CaseCheck check_case(const Scene& scene, std::span<const Property* const> properties, std::span<const Engine> engines);
+
+// Each named property on every engine of all_engines() it applies to; the failures.
 std::vector<Failure> check_case(const Scene& scene, std::span<const std::string> property_names);
 
 }  // namespace rast::properties
