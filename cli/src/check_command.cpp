@@ -61,18 +61,13 @@ std::string describe_sample(Viewport vp, int samples, std::size_t index) {
            shortest(i + p.x) + ", " + shortest(j + p.y) + ")";
 }
 
-std::vector<std::size_t> covered(const Triangle& t, const Scene& scene, const EngineChoice& engine) {
-    if (engine.is_reference()) return reference::covered_samples(t, scene.viewport, scene.samples);
-    return fast::covered_samples(t, scene.viewport, scene.samples, engine.fast_options().precision);
-}
-
 // For every sample, the triangles that cover it, ascending, as compressed rows: one offset per sample and
 // one flat array of triangle ids, 4 bytes each. A vector per sample took 24 bytes a sample, twice render's
 // buffers; this takes 4, beside 4 per covering and, while it is built, one triangle's list of samples.
 class Coverage {
 public:
     // Each triangle is rasterized twice, to count and then to fill, so no per-triangle lists are held.
-    Coverage(const Scene& scene, const EngineChoice& engine)
+    Coverage(const Scene& scene, const Engine& engine)
         : offsets_(static_cast<std::size_t>(scene.viewport.width) * scene.viewport.height * scene.samples + 1) {
         const auto& triangles = scene.triangles;
         // edge_numbers names each triangle's edges by 3 * triangle + edge in 32 bits.
@@ -80,7 +75,7 @@ public:
             throw std::length_error("rast check: " + std::to_string(triangles.size()) +
                                     " triangles exceed 32-bit edge numbers");
         for (const Triangle& t : triangles)
-            for (std::size_t index : covered(t, scene, engine)) ++offsets_[index + 1];
+            for (std::size_t index : engine.covered_samples(t, scene.viewport, scene.samples)) ++offsets_[index + 1];
         // offsets_[index + 1] becomes where the sample's ids start, and the fill below moves it to where
         // they end, which is where the next sample's start.
         std::uint64_t total = 0;
@@ -90,7 +85,7 @@ public:
             throw std::length_error("rast check: " + std::to_string(total) + " coverings exceed 32-bit indices");
         ids_.resize(total);
         for (std::size_t k = 0; k < triangles.size(); ++k)
-            for (std::size_t index : covered(triangles[k], scene, engine))
+            for (std::size_t index : engine.covered_samples(triangles[k], scene.viewport, scene.samples))
                 ids_[offsets_[index + 1]++] = static_cast<std::uint32_t>(k);
     }
 
@@ -190,29 +185,26 @@ std::string command_line(const CheckOptions& o) {
     return text;
 }
 
-std::string engine_name(const CheckOptions& o) { return o.engine.is_reference() ? "reference" : o.engine.precision; }
-
 // Where a violation is kept: one file per input and engine, replaced by the next run's.
-fs::path case_file(const CheckOptions& o) {
-    const std::string name = "check-" + fs::path(o.input.path).stem().string() + "-" + engine_name(o) + ".tri";
+fs::path case_file(const CheckOptions& o, const Engine& engine) {
+    const std::string name = "check-" + fs::path(o.input.path).stem().string() + "-" + engine.name + ".tri";
     return fs::path(o.corpus_out) / name;
 }
 
 // The violation as a corpus case: the triangles that cover the first violating sample. For a scene
 // they are a folded or cracked tiling, which watertight rejects; for a mesh, front and back faces
 // overlap by nature, so the case names the per-triangle properties that catch a wrong coverage.
-fs::path keep_case(const CheckOptions& o, const Scene& scene, const Coverage& coverage, const Violation& first,
-                   bool mesh) {
+fs::path keep_case(const CheckOptions& o, const Engine& engine, const Scene& scene, const Coverage& coverage,
+                   const Violation& first, bool mesh) {
     Scene kept{scene.viewport, scene.samples, {}};
     for (std::uint32_t k : coverage.at(first.sample)) kept.triangles.push_back(scene.triangles[k]);
-    const std::string engine = engine_name(o);
     const std::string where = describe_sample(scene.viewport, scene.samples, first.sample);
     const TriHeader header{
         {"properties", mesh ? "tie_rule float_within_bound" : "watertight"},
-        {"why", "rast check [" + engine + "]: " + where + " " + first.what},
+        {"why", "rast check [" + engine.name + "]: " + where + " " + first.what},
         {"found-by", "rast check"},
         {"reproduce", command_line(o)}};
-    const fs::path file = case_file(o);
+    const fs::path file = case_file(o, engine);
     fs::create_directories(file.parent_path());
     write_tri_file(file, kept, header);
     return file;
@@ -221,12 +213,13 @@ fs::path keep_case(const CheckOptions& o, const Scene& scene, const Coverage& co
 bool run_check(const CheckOptions& o) {
     // A folder the user named is checked before the work. The default is not: most checks find nothing
     // to write, and they run in a folder the user may not write in as well.
-    if (o.corpus_out_given) check_output_paths({o.input.path}, {{"--corpus-out", case_file(o).string(), true}});
+    const Engine engine = o.engine.make();
+    if (o.corpus_out_given) check_output_paths({o.input.path}, {{"--corpus-out", case_file(o, engine).string(), true}});
     const bool mesh = o.input.is_mesh();
     const Scene scene = o.input.load();
     std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, "
               << scene.viewport.width << "x" << scene.viewport.height << ", " << scene.samples
-              << " sample(s) per pixel\nengine: " << o.engine.describe() << '\n';
+              << " sample(s) per pixel\nengine: " << engine.description << '\n';
 
     if (mesh) {
         if (!read_mesh(o.input.path).closed) {
@@ -241,7 +234,7 @@ bool run_check(const CheckOptions& o) {
     } else {
         std::cout << "rule:   no sample covered by two triangles that share an edge\n";
     }
-    const Coverage coverage(scene, o.engine);
+    const Coverage coverage(scene, engine);
     const std::vector<Violation> violations =
         mesh ? unbalanced_facing(scene, coverage) : overlaps_along_shared_edges(scene, coverage);
     for (std::size_t k = 0; k < violations.size() && k < o.show; ++k)
@@ -250,7 +243,7 @@ bool run_check(const CheckOptions& o) {
     if (violations.size() > o.show) std::cout << "  ... and " << violations.size() - o.show << " more\n";
     std::cout << violations.size() << " violating samples\n";
     if (violations.empty()) return true;
-    const fs::path kept = keep_case(o, scene, coverage, violations.front(), mesh);
+    const fs::path kept = keep_case(o, engine, scene, coverage, violations.front(), mesh);
     std::cout << "wrote " << kept.string() << '\n';
     return false;
 }

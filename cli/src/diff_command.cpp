@@ -50,8 +50,9 @@ Image disagreement(const Framebuffer& a, const Framebuffer& b, const Image& refe
 void run_diff(const DiffOptions& o) {
     check_output_paths({o.input.path}, {{"-o", o.image_out}});
     const Scene scene = o.input.load();
-    const Framebuffer exact = render(scene, EngineChoice{.engine = "reference"});
-    const Framebuffer fast = render(scene, o.engine);
+    const Engine engine = o.engine.make();
+    const Framebuffer exact = reference_engine().render(scene);
+    const Framebuffer fast = engine.render(scene);
 
     std::size_t samples = 0, pixels = 0;
     const Viewport vp = scene.viewport;
@@ -64,7 +65,7 @@ void run_diff(const DiffOptions& o) {
         }
     std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, " << vp.width << "x"
               << vp.height << ", " << scene.samples << " sample(s) per pixel\n"
-              << "compare: reference (exact) vs " << o.engine.describe() << '\n'
+              << "compare: reference (exact) vs " << engine.description << '\n'
               << "differing samples: " << samples << " of " << exact.ids.size() << '\n'
               << "differing pixels: " << pixels << " of " << std::size_t(vp.width) * vp.height << '\n';
     if (!o.image_out) return;
@@ -72,7 +73,7 @@ void run_diff(const DiffOptions& o) {
     const int scale = std::max(1, (kMinimumSide + std::max(vp.width, vp.height) - 1) / std::max(vp.width, vp.height));
     const Image panels = side_by_side({reference, resolve_ids(fast), disagreement(exact, fast, reference)}, scale);
     write_file_atomic(*o.image_out, encode_png(panels));
-    std::cout << "wrote " << *o.image_out << " (reference | " << o.engine.describe()
+    std::cout << "wrote " << *o.image_out << " (reference | " << engine.description
               << " | disagreeing pixels in magenta), magnified " << scale << "x\n";
 }
 

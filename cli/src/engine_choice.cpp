@@ -2,23 +2,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-
 namespace rast::cli {
 
-fast::Options EngineChoice::fast_options() const {
+Engine EngineChoice::make(reference::Stats* stats) const {
+    if (is_reference()) return reference_engine(stats);
     // The option's validator has already accepted the name.
-    return {.precision = *fast::parse_precision(precision), .threads = threads};
-}
-
-std::string EngineChoice::describe() const {
-    if (is_reference()) return "reference (exact)";
-    // What runs: a count above the machine's is not what the user would see in the time taken.
-    const int limit = fast::max_threads(), runs = threads == 0 ? limit : std::min(threads, limit);
-    std::string text = "fast " + precision + ", " + std::to_string(runs) + (runs == 1 ? " thread" : " threads");
-    if (threads == 0) text += " (all)";
-    else if (threads > limit) text += " (" + std::to_string(threads) + " asked; the most this machine runs)";
-    return text;
+    return fast_engine(*fast::parse_precision(precision), threads);
 }
 
 void add_engine_options(CLI::App& command, EngineChoice& choice) {
@@ -49,11 +38,6 @@ void add_engine_options(CLI::App& command, EngineChoice& choice) {
         ->check(CLI::Range(0, 1024))
         ->check(for_fast_only)
         ->capture_default_str();
-}
-
-Framebuffer render(const Scene& scene, const EngineChoice& choice, reference::Stats* stats) {
-    if (choice.is_reference()) return reference::render(scene, stats);
-    return fast::render(scene, choice.fast_options());
 }
 
 }  // namespace rast::cli

@@ -86,18 +86,19 @@ void run_render(const RenderOptions& o) {
     }
 
     reference::Stats stats;
+    const Engine engine = o.engine.make(&stats);
     const auto start = std::chrono::steady_clock::now();
-    const Framebuffer fb = render(scene, o.engine, &stats);
+    const Framebuffer fb = engine.render(scene);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     std::size_t covered = 0;
     for (auto id : fb.ids) covered += id != Framebuffer::kNoTriangle;
     std::cout << "scene:   " << name << ": " << scene.triangles.size() << " triangles, " << scene.viewport.width
               << "x" << scene.viewport.height << ", " << scene.samples << " sample(s) per pixel\n"
-              << "engine:  " << o.engine.describe() << ", " << std::fixed << std::setprecision(2) << ms
+              << "engine:  " << engine.description << ", " << std::fixed << std::setprecision(2) << ms
               << " ms\n" << std::defaultfloat
               << "covered: " << covered << " of " << fb.ids.size() << " samples\n";
-    if (o.engine.is_reference()) {
+    if (engine.is_reference()) {
         // How often the floating-point filters could not decide and exact arithmetic ran.
         const auto line = [](std::uint64_t exact, std::uint64_t all, const char* what) {
             std::cout << "  " << exact << " of " << all << ' ' << what << " (" << percent(exact, all) << ")\n";
@@ -120,7 +121,7 @@ void run_render(const RenderOptions& o) {
         // The id and depth files describe pixel centres: with several samples, render the centres once more.
         Scene centres = scene;
         centres.samples = 1;
-        const Framebuffer at_centres = scene.samples == 1 ? fb : render(centres, o.engine);
+        const Framebuffer at_centres = scene.samples == 1 ? fb : engine.render(centres);
         if (o.ids_out) files.emplace_back(*o.ids_out, format_ids(at_centres));
         if (o.depth_out) files.emplace_back(*o.depth_out, format_depth(at_centres));
     }
