@@ -155,33 +155,33 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
     // Rendered once untimed, the baseline of every error (and the warm-up); then timed in the rounds,
     // each time into a framebuffer of its own, as reference::render makes it.
     reference::Stats stats;
-    const Framebuffer exact = reference::render(scene, &stats);
+    const Framebuffer exact = reference_engine(&stats).render(scene);
     s.info.fragments = stats.samples_covered;
 
     const std::span<const int> thread_counts = time ? std::span<const int>(kThreads) : std::span<const int>();
     std::vector<Contender> contenders;
-    if (time)
+    if (time) {
+        const Engine reference = reference_engine();
         contenders.push_back(
-            {"reference", 1, [&scene] { return seconds_of([&] { reference::render(scene); }); }, {}, {}});
+            {reference.name, 1, [&scene, reference] { return seconds_of([&] { reference.render(scene); }); }, {}, {}});
+    }
     std::vector<ErrorRow> rows;
-    // Each mode's result, rendered once untimed, then timed into it through a Renderer per thread count,
-    // which keeps its working memory from round to round and mode to mode, as llvmpipe draws into its
-    // context's with the context's memory. Each contender's first render is an untimed warm-up.
+    // Each mode's result, rendered once untimed, then timed into it by an engine per thread count, which
+    // keeps its working memory from round to round, as llvmpipe draws into its context's with the
+    // context's memory. Each contender's first render is an untimed warm-up.
+    std::vector<Engine> modes;
     std::vector<Framebuffer> results;
     results.reserve(kModes.size());
-    std::vector<fast::Renderer> renderers(thread_counts.size());
     for (const fast::Precision mode : kModes) {
         progress << ", " << fast::name(mode) << std::flush;
-        Framebuffer& result = results.emplace_back(fast::render(scene, {mode, 1}));
-        rows.push_back(error_row(s.info, std::string(fast::name(mode)), compare_buffers(exact, result)));
-        for (std::size_t t = 0; t < thread_counts.size(); ++t) {
-            const fast::Options options{mode, thread_counts[t]};
-            fast::Renderer& renderer = renderers[t];
-            renderer.render(scene, result, options);
-            contenders.push_back({std::string(fast::name(mode)), options.threads,
-                                  [&scene, &result, &renderer, options] {
-                                      return seconds_of([&] { renderer.render(scene, result, options); });
-                                  },
+        const Engine& once = modes.emplace_back(fast_engine(mode));
+        Framebuffer& result = results.emplace_back(once.render(scene));
+        rows.push_back(error_row(s.info, once.name, compare_buffers(exact, result)));
+        for (const int threads : thread_counts) {
+            const Engine engine = fast_engine(mode, threads);
+            engine.draw(scene, result);
+            contenders.push_back({engine.name, threads,
+                                  [&scene, &result, engine] { return seconds_of([&] { engine.draw(scene, result); }); },
                                   {}, {}});
         }
     }
@@ -216,7 +216,7 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
         }
     }
     progress << ", coverage" << std::flush;
-    const auto coverage = compare_coverage(scene, kModes, s.shared_edges);
+    const auto coverage = compare_coverage(scene, modes, s.shared_edges);
     for (std::size_t m = 0; m < kModes.size(); ++m) {
         rows[m].misclassified = coverage[m].samples;
         rows[m].triangles_affected = coverage[m].triangles;

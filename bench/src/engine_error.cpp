@@ -1,6 +1,7 @@
 #include "engine_error.h"
 
-#include <rast/reference.h>
+#include <rast/exact_geometry.h>
+#include <rast/properties.h>
 
 #include <algorithm>
 #include <bit>
@@ -9,14 +10,6 @@
 
 namespace rast::bench {
 namespace {
-
-// The sign of twice the signed area, exactly.
-int orientation(const Triangle& t) {
-    using reference::Rational;
-    const Vertex &a = t.v[0], &b = t.v[1], &c = t.v[2];
-    const Rational cross = (Rational(b.x) - a.x) * (Rational(c.y) - a.y) - (Rational(b.y) - a.y) * (Rational(c.x) - a.x);
-    return cross.sign();
-}
 
 // |a \ b| + |b \ a| for ascending lists.
 std::uint64_t symmetric_difference(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
@@ -53,35 +46,37 @@ BufferDifference compare_buffers(const Framebuffer& reference, const Framebuffer
     return d;
 }
 
-std::vector<CoverageDifference> compare_coverage(const Scene& scene, std::span<const fast::Precision> modes,
+std::vector<CoverageDifference> compare_coverage(const Scene& scene, std::span<const Engine> engines,
                                                  bool watertight) {
+    using properties::orientation;
+    const Engine reference = reference_engine();
     const Viewport vp = scene.viewport;
     const int n = scene.samples;
     const std::size_t total = static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height) *
                               static_cast<std::size_t>(n);
-    std::vector<CoverageDifference> result(modes.size());
+    std::vector<CoverageDifference> result(engines.size());
     std::vector<std::vector<std::int32_t>> winding, expected;
     if (watertight) {
-        winding.assign(modes.size(), std::vector<std::int32_t>(total, 0));
+        winding.assign(engines.size(), std::vector<std::int32_t>(total, 0));
         expected = winding;
     }
     for (const Triangle& t : scene.triangles) {
-        const std::vector<std::size_t> exact = reference::covered_samples(t, vp, n);
-        for (std::size_t m = 0; m < modes.size(); ++m) {
-            const std::vector<std::size_t> got = fast::covered_samples(t, vp, n, modes[m]);
+        const std::vector<std::size_t> exact = reference.covered_samples(t, vp, n);
+        for (std::size_t m = 0; m < engines.size(); ++m) {
+            const std::vector<std::size_t> got = engines[m].covered_samples(t, vp, n);
             const std::uint64_t differing = symmetric_difference(got, exact);
             result[m].samples += differing;
             result[m].triangles += differing > 0 ? 1 : 0;
             if (!watertight) continue;
-            const Triangle geometry = fast::snap(t, modes[m]);
+            const Triangle geometry = properties::rasterized_geometry(engines[m], t);
             // A triangle that snapping flattens keeps its input's sign, so that anything the mode
             // still covers with it shows up.
             const int sign = orientation(geometry) != 0 ? orientation(geometry) : orientation(t);
             add_winding(winding[m], got, sign);
-            add_winding(expected[m], geometry == t ? exact : reference::covered_samples(geometry, vp, n), sign);
+            add_winding(expected[m], geometry == t ? exact : reference.covered_samples(geometry, vp, n), sign);
         }
     }
-    for (std::size_t m = 0; m < modes.size() && watertight; ++m) {
+    for (std::size_t m = 0; m < engines.size() && watertight; ++m) {
         std::uint64_t violations = 0;
         for (std::size_t k = 0; k < total; ++k) violations += winding[m][k] != expected[m][k] ? 1 : 0;
         result[m].watertight = violations;

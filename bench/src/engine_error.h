@@ -1,7 +1,7 @@
-// The error of the fast path's precision modes, and of any framebuffer, against the exact reference.
+// The error of any engine, and of any framebuffer, against the exact reference.
 #pragma once
 
-#include <rast/fast.h>
+#include <rast/engine.h>
 #include <rast/scene.h>
 
 #include <cstdint>
@@ -31,9 +31,9 @@ struct CoverageDifference {
     std::optional<std::uint64_t> watertight;
 };
 
-// Per triangle, each mode's covered_samples against the reference's, for each mode in order; the
+// Per triangle, each engine's covered_samples against the reference's, for each engine in order; the
 // watertightness count only when `watertight` is set (it needs the reference on every snapped triangle).
-std::vector<CoverageDifference> compare_coverage(const Scene& scene, std::span<const fast::Precision> modes,
+std::vector<CoverageDifference> compare_coverage(const Scene& scene, std::span<const Engine> engines,
                                                  bool watertight);
 
 }  // namespace rast::bench
