@@ -11,13 +11,13 @@
 
 #include <rast/exact_geometry.h>
 #include <rast/mesh.h>
+#include <rast/number_text.h>
 #include <rast/tri_format.h>
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -46,11 +46,6 @@ struct Violation {
     std::size_t sample;  // Framebuffer::index
     std::string what;
 };
-
-std::string shortest(double value) {
-    char text[32];
-    return {text, std::to_chars(text, text + sizeof text, value).ptr};
-}
 
 std::string describe_sample(Viewport vp, int samples, std::size_t index) {
     const int s = static_cast<int>(index % samples);

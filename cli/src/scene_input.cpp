@@ -1,6 +1,7 @@
 #include "scene_input.h"
 
 #include <rast/mesh.h>
+#include <rast/number_text.h>
 #include <rast/scene_limits.h>
 #include <rast/tri_format.h>
 
@@ -8,7 +9,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -83,10 +83,7 @@ bool SceneInput::is_mesh() const { return is_mesh_path(path); }
 
 std::string SceneInput::options() const {
     // The shortest text that reads back as the same double; "=" keeps a leading minus from reading as an option.
-    const auto number = [](double value) {
-        char text[32];
-        return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
-    };
+    const auto number = [](double value) { return shortest(value); };
     std::string text;
     if (samples) text += " --samples " + std::to_string(*samples);
     if (!is_mesh()) return text;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <charconv>
 
 namespace rast::properties {
 
@@ -38,12 +37,6 @@ PixelRange pixel_range(const Triangle& t, Viewport vp) {
     r.i1 = std::min(r.i1, vp.width - 1);
     r.j1 = std::min(r.j1, vp.height - 1);
     return r;
-}
-
-std::string shortest(double value) {
-    char buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-    return std::string(buffer, end);
 }
 
 std::string describe(const Sample& at) {

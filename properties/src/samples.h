@@ -2,6 +2,7 @@
 // and how a failure names one.
 #pragma once
 
+#include <rast/number_text.h>
 #include <rast/scene.h>
 
 #include <cstddef>
@@ -42,8 +43,7 @@ void for_each_sample(PixelRange r, Viewport vp, int samples, F&& f) {
 
 inline PixelRange whole(Viewport vp) { return {0, vp.width - 1, 0, vp.height - 1}; }
 
-// A double in the shortest decimal that reads back to it.
-std::string shortest(double value);
+using rast::shortest;
 
 // "pixel (i, j) sample s at (x, y)"
 std::string describe(const Sample& at);

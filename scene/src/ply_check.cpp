@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "number_token.h"
+#include "rast/number_text.h"
 #include "rast/parse_error.h"
 #include "token_lines.h"
 
@@ -413,9 +413,7 @@ private:
 void check_float_range(double value, const PlyElement& e, long long row, const PlyProperty& p,
                        const std::string& file) {
     if (!std::isfinite(value) || !std::isinf(static_cast<float>(value))) return;
-    char text[32];
-    const std::string shortest(text, std::to_chars(text, text + sizeof text, value).ptr);
-    throw ParseError(file, 0, record(e, row) + ": " + p.name + " = " + shortest +
+    throw ParseError(file, 0, record(e, row) + ": " + p.name + " = " + shortest(value) +
                                   " exceeds float range: meshes are read as float");
 }
 
