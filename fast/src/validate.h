@@ -3,6 +3,7 @@
 #pragma once
 
 #include <rast/fast.h>
+#include <rast/scene_limits.h>
 
 #include <cmath>
 #include <cstddef>
@@ -12,23 +13,7 @@
 
 namespace rast::fast::detail {
 
-inline void validate(Viewport vp, int samples) {
-    constexpr int kMaxSide = 1 << 24;  // pixel indices convert exactly to float in the float32 kernel
-    if (vp.width < 1 || vp.height < 1 || vp.width > kMaxSide || vp.height > kMaxSide)
-        throw std::invalid_argument("rast::fast: viewport " + std::to_string(vp.width) + "x" +
-                                    std::to_string(vp.height) + " is not 1..2^24 pixels on each side");
-    if (!is_supported_sample_count(samples))
-        throw std::invalid_argument("rast::fast: unsupported sample count " + std::to_string(samples) +
-                                    " (expected 1, 4, 8 or 16)");
-    // Checked before anything is sized for it: a framebuffer of 2^48 samples is no allocation to attempt.
-    constexpr std::uint64_t kMaxSamples = std::uint64_t{1} << 32;
-    const std::uint64_t total = std::uint64_t(vp.width) * std::uint64_t(vp.height) * std::uint64_t(samples);
-    if (total > kMaxSamples)
-        throw std::invalid_argument("rast::fast: viewport " + std::to_string(vp.width) + "x" +
-                                    std::to_string(vp.height) + " with " + std::to_string(samples) +
-                                    " samples per pixel has " + std::to_string(total) +
-                                    " samples, more than 2^32");
-}
+inline void validate(Viewport vp, int samples) { check_framebuffer(vp, samples, "rast::fast"); }
 
 inline bool is_finite(const Vertex& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 

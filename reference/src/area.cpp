@@ -124,7 +124,7 @@ Rational pixel_area(const Triangle& t, int i, int j) {
 
 std::vector<Rational> coverage_area(const Scene& scene) {
     const Viewport vp = scene.viewport;
-    detail::require_valid(vp);
+    detail::require_valid(vp, 1);  // one area per pixel, whatever the samples
     for (std::size_t id = 0; id < scene.triangles.size(); ++id) detail::require_finite(scene.triangles[id], id);
     std::vector<Rational> coverage(static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height));
     for (const Triangle& t : scene.triangles) {

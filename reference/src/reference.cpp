@@ -414,7 +414,7 @@ bool covers(const Triangle& t, double x, double y) {
 }
 
 std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int samples) {
-    detail::require_valid(vp);
+    detail::require_valid(vp, samples);
     detail::require_finite(t);
     const auto pattern = sample_pattern(samples);
     Stats stats;
@@ -440,7 +440,7 @@ Rational depth_at(const Triangle& t, double x, double y) {
 }
 
 Framebuffer render(const Scene& scene, Stats* stats_out) {
-    detail::require_valid(scene.viewport);
+    detail::require_valid(scene.viewport, scene.samples);
     const auto pattern = sample_pattern(scene.samples);
     if (scene.triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
         throw std::invalid_argument("render: too many triangles for 32-bit ids");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <rast/scene.h>
+#include <rast/scene_limits.h>
 
 #include <cmath>
 #include <cstddef>
@@ -12,13 +13,8 @@
 
 namespace rast::reference::detail {
 
-inline void require_valid(Viewport vp) {
-    if (vp.width <= 0 || vp.height <= 0) {
-        std::ostringstream msg;
-        msg << "viewport " << vp.width << "x" << vp.height << " must have a positive width and height";
-        throw std::invalid_argument(msg.str());
-    }
-}
+// The engines' limits (rast/scene_limits.h), checked before anything is sized for them.
+inline void require_valid(Viewport vp, int samples) { check_framebuffer(vp, samples, "rast::reference"); }
 
 // `id` names the triangle in the message when the caller knows it.
 inline void require_finite(const Triangle& t, std::optional<std::size_t> id = std::nullopt) {

@@ -276,6 +276,16 @@ TEST(Coverage, BadInputIsRejected) {
     EXPECT_THROW(covers(flat(0, 0, 1, 0, 0, 1), inf, 0.5), std::invalid_argument);
     EXPECT_THROW(covered_samples(flat(0, 0, 1, 0, 0, 1), Viewport{0, 4}, 1), std::invalid_argument);
     EXPECT_THROW(covered_samples(flat(0, 0, 1, 0, 0, 1), Viewport{4, 4}, 3), std::invalid_argument);
+    // The engines' limits (rast/scene_limits.h), refused before anything is sized for them: a side past
+    // 2^24, and 2^24 x 2^24 pixels, 2^48 samples, far past 2^32.
+    EXPECT_THROW(covered_samples(flat(0, 0, 1, 0, 0, 1), Viewport{(1 << 24) + 1, 1}, 1), std::invalid_argument);
+    try {
+        render(scene(1 << 24, 1 << 24, {flat(0, 0, 1, 0, 0, 1)}));
+        FAIL() << "a framebuffer of 2^48 samples was attempted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("rast::reference: viewport 16777216x16777216"), std::string::npos)
+            << e.what();
+    }
     try {
         render(scene(4, 4, {flat(0, 0, 1, 0, 0, 1), flat(0, 0, inf, 0, 0, 1)}));
         FAIL() << "a non-finite vertex was accepted";
