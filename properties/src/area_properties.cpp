@@ -35,9 +35,7 @@ bool strictly_inside_pixel(const SamplePoint& p) { return p.x > 0 && p.x < 1 && 
 // covered, and a pixel not covered at all has none of them covered.
 Outcome area_tiling(const Scene& scene, const Engine& engine) {
     const Scene geometry = rasterized_geometry(engine, scene);
-    if (const auto k = folded_by_snapping(scene, geometry))
-        return Outcome::not_applicable("snapping to the " + engine.name + " grid folds triangle " +
-                                       describe(scene.triangles[*k], *k));
+    if (auto folded = folded_by_snapping(scene, geometry, engine)) return *folded;
     const Viewport vp = scene.viewport;
     const auto pixel_index = [&](int i, int j) {
         return static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width) + static_cast<std::size_t>(i);

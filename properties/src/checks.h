@@ -21,9 +21,10 @@ Outcome float_within_bound(const Scene& scene, const Engine& engine);
 Outcome msaa_counts(const Scene& scene, const Engine& engine);
 Outcome area_tiling(const Scene& scene, const Engine& engine);
 
-// The first triangle that snapping to an engine's grid turns over (or gives area it did not have):
-// the snapped scene is then no longer the tiling the original was.
-std::optional<std::size_t> folded_by_snapping(const Scene& scene, const Scene& geometry);
+// Not applicable, naming the first triangle that snapping to the engine's grid turns over (or gives area
+// it did not have), where `geometry` (rasterized_geometry) has one: the snapped scene is then no longer
+// the tiling the original was.
+std::optional<Outcome> folded_by_snapping(const Scene& scene, const Scene& geometry, const Engine& engine);
 
 // The first sample at which two ascending sample lists differ, described with what each side said;
 // nullopt when they are equal.

@@ -21,11 +21,13 @@ EdgeKey edge_key(const Vertex& a, const Vertex& b) {
 
 }  // namespace
 
-std::optional<std::size_t> folded_by_snapping(const Scene& scene, const Scene& geometry) {
+std::optional<Outcome> folded_by_snapping(const Scene& scene, const Scene& geometry, const Engine& engine) {
     for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
         const int before = orientation(scene.triangles[k]);
         const int after = orientation(geometry.triangles[k]);
-        if (after != 0 && after != before) return k;
+        if (after != 0 && after != before)
+            return Outcome::not_applicable("snapping to the " + engine.name + " grid folds triangle " +
+                                           describe(scene.triangles[k], k));
     }
     return std::nullopt;
 }
@@ -35,9 +37,7 @@ std::optional<std::size_t> folded_by_snapping(const Scene& scene, const Scene& g
 // covered twice; no sample outside the union is covered.
 Outcome watertight(const Scene& scene, const Engine& engine) {
     const Scene geometry = rasterized_geometry(engine, scene);
-    if (const auto k = folded_by_snapping(scene, geometry))
-        return Outcome::not_applicable("snapping to the " + engine.name + " grid folds triangle " +
-                                       describe(scene.triangles[*k], *k));
+    if (auto folded = folded_by_snapping(scene, geometry, engine)) return *folded;
     const Viewport vp = scene.viewport;
     const int n = scene.samples;
 
