@@ -389,7 +389,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
                 s.flt[k] = {ax, ay, single ? double(float(bx) - float(ax)) : bx - ax,
                             single ? double(float(by) - float(ay)) : by - ay, inclusive[k]};
             }
-            if (classify_tiles) s.float_margin = float_margin(v, c);
+            if (classify_tiles) s.float_margin = float_margin(v, c) * (F == Fault::halved_float_margin ? 0.5 : 1);
             break;
         }
         case Path::fixed: {

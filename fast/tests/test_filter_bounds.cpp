@@ -6,6 +6,7 @@
 #include "engine.h"
 #include "setup.h"
 
+#include <rast/fast_faults.h>
 #include <rast/filters/adversary.h>
 
 #include <gtest/gtest.h>
@@ -319,6 +320,34 @@ void expect_edge_bound_bites(const char* name) {
 TEST(EdgeBound, Float32IsSoundAndEveryTermBites) { expect_edge_bound_bites<float>("float32"); }
 
 TEST(EdgeBound, Float64IsSoundAndEveryTermBites) { expect_edge_bound_bites<double>("float64"); }
+
+// The float modes accept or reject a whole tile where every sample's exact edge function is beyond the
+// tile margin, the mode's edge bound plus the double evaluation's, so that the tile's samples get what
+// the per-sample float evaluation would give them. corpus/filters/float-margin-halved-accepts-a-sample.tri:
+// one edge passes by the corner sample (63.5, 63.5) of the tile [0, 64)^2, exactly inside by 0.643 of
+// the margin, while its float32 edge function there is exactly 0 on a right edge, which does not own the
+// sample. The tile is partial, and float32 leaves the sample out, as covered_samples (which never
+// classifies tiles) does; with the margin halved the tile is accepted whole and the sample drawn.
+TEST(TileMargin, HalvedAcceptsASampleTheFloatEvaluationLeavesOut) {
+    const Triangle t{{Vertex{0x1.07766411db3e2p+23, -0x1.05a033fb8188cp+23, 0},
+                      Vertex{-0x1.077561f1db3e2p+23, 0x1.05a135fb8188cp+23, 0}, Vertex{-136, -136, 0}}};
+    const Scene scene{{64, 64}, 1, {t}};
+    const std::size_t corner = 63 * 64 + 63;
+    const float ax = float(t.v[0].x), ay = float(t.v[0].y), bx = float(t.v[1].x), by = float(t.v[1].y);
+    EXPECT_EQ((bx - ax) * (63.5f - ay) - (by - ay) * (63.5f - ax), 0.0f);
+    const Rational exact = (Rational(t.v[1].x) - t.v[0].x) * (Rational(63.5) - t.v[0].y) -
+                           (Rational(t.v[1].y) - t.v[0].y) * (Rational(63.5) - t.v[0].x);
+    const Viewport vp = scene.viewport;
+    const double margin = edge_error_bound(t, Precision::float32, vp) + edge_error_bound(t, Precision::float64, vp);
+    EXPECT_GT(exact, Rational(margin) / 2);
+    EXPECT_LT(exact, Rational(margin));
+
+    const std::vector<std::size_t> per_sample = covered_samples(t, vp, 1, Precision::float32);
+    EXPECT_FALSE(std::binary_search(per_sample.begin(), per_sample.end(), corner));
+    EXPECT_EQ(per_sample.size(), std::size_t{64 * 64 - 1});
+    EXPECT_EQ(render(scene, {Precision::float32, 1}).ids[corner], Framebuffer::kNoTriangle);
+    EXPECT_EQ(render_with_fault(scene, {Precision::float32, 1}, Fault::halved_float_margin).ids[corner], 0);
+}
 
 }  // namespace
 }  // namespace rast::fast::detail

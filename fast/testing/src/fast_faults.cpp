@@ -17,6 +17,7 @@ auto with_fault(Fault fault, Args&&... args) {
         case Fault::bbox_one_short: return Call<Fault::bbox_one_short>::run(args...);
         case Fault::float_row_accumulation: return Call<Fault::float_row_accumulation>::run(args...);
         case Fault::halved_depth_bound: return Call<Fault::halved_depth_bound>::run(args...);
+        case Fault::halved_float_margin: return Call<Fault::halved_float_margin>::run(args...);
     }
     throw std::invalid_argument("rast::fast: unknown fault " + std::to_string(static_cast<int>(fault)));
 }

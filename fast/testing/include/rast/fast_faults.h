@@ -19,6 +19,7 @@ enum class Fault {
     bbox_one_short,            // the bounding box misses its last column and row of pixels
     float_row_accumulation,    // float modes: the edge function stepped along a row by repeated addition
     halved_depth_bound,        // every depth plane's error bound halved (docs/filters.md)
+    halved_float_margin,       // float modes: the whole-tile test's margin halved (docs/filters.md)
 };
 
 Framebuffer render_with_fault(const Scene& scene, const Options& options, Fault fault);
