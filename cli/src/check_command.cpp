@@ -10,6 +10,7 @@
 #include "shell_word.h"
 
 #include <rast/exact_geometry.h>
+#include <rast/properties.h>
 #include <rast/mesh.h>
 #include <rast/number_text.h>
 #include <rast/tri_format.h>
@@ -149,15 +150,25 @@ std::vector<Violation> overlaps_along_shared_edges(const Scene& scene, const Cov
 
 // A closed mesh: facing is the sign of each projected triangle's screen-space area (projection keeps the
 // faces' winding); every sample must be covered as often by front- as by back-facing triangles.
-std::vector<Violation> unbalanced_facing(const Scene& scene, const Coverage& coverage) {
-    std::vector<bool> front_facing(scene.triangles.size());
-    for (std::size_t k = 0; k < scene.triangles.size(); ++k)
-        front_facing[k] = properties::orientation(scene.triangles[k]) > 0;
+// Facing is that of the geometry the engine rasterizes: snapping can turn a sliver over, and one that
+// snapping flattens covers nothing and counts for neither side. Says how many snapping changed.
+std::vector<Violation> unbalanced_facing(const Scene& scene, const Engine& engine, const Coverage& coverage) {
+    std::vector<int> facing(scene.triangles.size());
+    std::size_t turned = 0, flattened = 0;
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
+        const int given = properties::orientation(scene.triangles[k]);
+        facing[k] = properties::orientation(properties::rasterized_geometry(engine, scene.triangles[k]));
+        turned += given != 0 && facing[k] == -given;
+        flattened += given != 0 && facing[k] == 0;
+    }
+    if (engine.snap_bits())
+        std::cout << "facing: of the snapped triangles; snapping to the " << engine.name << " grid turned " << turned
+                  << " over and flattened " << flattened << '\n';
     std::vector<Violation> found;
     for (std::size_t index = 0; index < coverage.samples(); ++index) {
         const auto ids = coverage.at(index);
-        const auto front = std::ranges::count_if(ids, [&](std::uint32_t k) { return front_facing[k]; });
-        const auto back = static_cast<std::ptrdiff_t>(ids.size()) - front;
+        const auto front = std::ranges::count_if(ids, [&](std::uint32_t k) { return facing[k] > 0; });
+        const auto back = std::ranges::count_if(ids, [&](std::uint32_t k) { return facing[k] < 0; });
         if (front != back)
             found.push_back({index, "covered " + std::to_string(ids.size()) + " times: " + std::to_string(front) +
                                         " front-facing, " + std::to_string(back) + " back-facing"});
@@ -231,7 +242,7 @@ bool run_check(const CheckOptions& o) {
     }
     const Coverage coverage(scene, engine);
     const std::vector<Violation> violations =
-        mesh ? unbalanced_facing(scene, coverage) : overlaps_along_shared_edges(scene, coverage);
+        mesh ? unbalanced_facing(scene, engine, coverage) : overlaps_along_shared_edges(scene, coverage);
     for (std::size_t k = 0; k < violations.size() && k < o.show; ++k)
         std::cout << "  " << describe_sample(scene.viewport, scene.samples, violations[k].sample) << ": "
                   << violations[k].what << '\n';
@@ -250,9 +261,10 @@ void add_check_command(CLI::App& app, int& status) {
     CLI::App* cmd = app.add_subcommand(
         "check",
         "Count, for every sample, the triangles that cover it (no z-buffer). A closed mesh (OBJ, OFF, PLY,\n"
-        "STL; OpenMesh tells) must be covered as often by front- as by back-facing triangles everywhere; a .tri\n"
-        "scene must not cover a sample twice by triangles sharing an edge. Violations are printed, written as a\n"
-        "corpus case, and make the exit status 1.");
+        "STL; OpenMesh tells) must be covered as often by front- as by back-facing triangles everywhere (facing\n"
+        "as the engine rasterizes them: snapped, in the fixed modes); a .tri scene must not cover a sample twice\n"
+        "by triangles sharing an edge. Violations are printed, written as a corpus case, and make the exit\n"
+        "status 1.");
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
     // Coverage is counted triangle by triangle, on one thread: the option would be ignored.
