@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -122,9 +123,17 @@ Scene SceneInput::load() const {
     if (view.target) camera.target = *view.target;
     if (view.up) camera.up = *view.up;
     if (view.fov_y_degrees) camera.fov_y_degrees = *view.fov_y_degrees;
+    // The default planes bracket the mesh as seen from the default eye; from anywhere else, frame them
+    // again for the camera in use.
+    if (view.eye || view.target || view.up) camera = frame_depth(mesh, camera);
     if (view.near_plane) camera.near_plane = *view.near_plane;
     if (view.far_plane) camera.far_plane = *view.far_plane;
-    return with_samples(project(mesh, camera, vp, 1));
+    const Projection projection = project_with_sources(mesh, camera, vp, 1);
+    if (projection.faces_cut > 0 || projection.faces_hidden > 0)
+        std::cerr << "rast: note: the near plane, " << shortest(camera.near_plane) << " from the eye, cuts "
+                  << projection.faces_cut << " of the mesh's " << mesh.faces.size() << " faces and hides "
+                  << projection.faces_hidden << " behind it (move the camera, or set --near)\n";
+    return with_samples(projection.scene);
 }
 
 }  // namespace rast::cli

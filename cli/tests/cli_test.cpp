@@ -13,6 +13,7 @@ namespace {
 using rast::cli::testing::contains;
 using rast::cli::testing::Result;
 using rast::cli::testing::rast;
+using rast::cli::testing::slurp;
 using rast::cli::testing::rast_piped;
 
 class Cli : public rast::cli::testing::TempDirTest {};
@@ -290,6 +291,29 @@ TEST_F(Cli, MeshOptionsPlaceAMesh) {
                           " --width 5 --height 2 --eye 0,0,4 --fov 40 --ids-out " + out("ids.txt"));
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_TRUE(contains(r.out, " 1 triangles, 5x2, ")) << r.out;
+}
+
+// A floor under the eye reaching behind it, seen from the origin looking down -z: the near and far planes
+// are framed for this camera, not the default one (which put the whole floor behind the near plane and
+// drew nothing, silently), and the note says what the near plane still cuts: the two faces that reach
+// behind the eye. A camera that sees all of a mesh gets no note.
+TEST_F(Cli, NearAndFarAreFramedForTheCameraInUse) {
+    const std::string floor = file("floor.obj", "v -5 -1 5\nv 5 -1 5\nv 5 -1 -5\nv -5 -1 -5\nf 1 2 3\nf 1 3 4\n");
+    const Result r = rast("render " + floor + " --width 16 --height 16 --eye 0,0,0 --target 0,0,-1 --ids-out " +
+                          out("ids.txt"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "rast: note: the near plane, ")) << r.out;
+    EXPECT_TRUE(contains(r.out, " cuts 2 of the mesh's 2 faces and hides 0 behind it")) << r.out;
+    // The floor fills the lower half of the picture, below the horizon: the id file's last line (the bottom
+    // row) is all floor, its first (the top row) all empty.
+    const std::string ids = slurp(dir / "ids.txt");
+    const std::string top = ids.substr(0, ids.find('\n')), bottom = ids.substr(ids.rfind('\n', ids.size() - 2) + 1);
+    EXPECT_FALSE(contains(bottom, "-1")) << ids;
+    EXPECT_EQ(top.find_first_not_of("-1 "), std::string::npos) << ids;
+
+    const Result seen = rast("render " + floor + " --width 16 --height 16 --ids-out " + out("ids.txt"));
+    ASSERT_EQ(seen.status, 0) << seen.out;
+    EXPECT_FALSE(contains(seen.out, "note")) << seen.out;
 }
 
 // The reference is exact; it would ignore the fast path's precision and threads.

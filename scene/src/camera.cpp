@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -85,6 +86,26 @@ Camera frame(const Mesh& mesh, Viewport viewport) {
     camera.up = {0, 1, 0};
     camera.near_plane = distance - radius;
     camera.far_plane = distance + radius;
+    return camera;
+}
+
+Camera frame_depth(const Mesh& mesh, Camera camera) {
+    check_camera(camera);
+    const Vec3 direction = normalized(camera.target - camera.eye);
+    double nearest = std::numeric_limits<double>::infinity(), farthest = 0;
+    bool behind = false;  // a vertex at or behind the eye's plane
+    for (const Vec3& p : mesh.positions) {
+        const double depth = dot(p - camera.eye, direction);
+        if (depth > 0) nearest = std::min(nearest, depth);
+        else behind = true;
+        farthest = std::max(farthest, depth);
+    }
+    if (!(farthest > 0)) return camera;
+    // Room either side, so that no vertex lies on a plane; depth is exact in the reference whatever the
+    // ratio far / near, and the floor keeps the projection's numbers in range.
+    camera.far_plane = 1.01 * farthest;
+    const double floor = camera.far_plane * 0x1p-20;
+    camera.near_plane = behind ? floor : std::max(0.99 * nearest, floor);
     return camera;
 }
 

@@ -84,6 +84,11 @@ Projection project_with_sources(const Mesh& mesh, const Camera& camera, Viewport
     const Clipper clipper{mesh, corners};
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         const std::vector<Corner> polygon = clipper.clip(mesh.faces[f]);
+        const auto& face = mesh.faces[f];
+        const bool whole = corners[face[0]].near_distance >= 0 && corners[face[1]].near_distance >= 0 &&
+                           corners[face[2]].near_distance >= 0;
+        out.faces_hidden += polygon.size() < 3;
+        out.faces_cut += !whole && polygon.size() >= 3;
         // A fan from the first corner keeps the polygon's orientation in every triangle.
         for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
             out.scene.triangles.push_back(

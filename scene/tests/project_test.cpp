@@ -121,6 +121,8 @@ TEST(Project, ClipsAtTheNearPlaneIntoTwoTriangles) {
     EXPECT_GT(signed_area(t0), 0);
     EXPECT_GT(signed_area(t1), 0);
     EXPECT_NEAR(total_signed_area(p.scene), 1250 - 5000.0 / 9, 1e-9);
+    EXPECT_EQ(p.faces_cut, 1u);
+    EXPECT_EQ(p.faces_hidden, 0u);
 }
 
 TEST(Project, DropsWhatIsBehindTheNearPlane) {
@@ -130,6 +132,42 @@ TEST(Project, DropsWhatIsBehindTheNearPlane) {
     const Projection p = project_with_sources(m, origin_camera(), {10, 10}, 1);
     EXPECT_EQ(p.scene.triangles.size(), 1u);
     EXPECT_EQ(p.source_face, (std::vector<std::size_t>{1}));
+    EXPECT_EQ(p.faces_cut, 0u);
+    EXPECT_EQ(p.faces_hidden, 1u);
+}
+
+// Near and far framed for the camera in use, along its view direction (here -z from the origin).
+TEST(FrameDepth, BracketsTheMeshInFrontOfTheEye) {
+    Mesh m;
+    m.positions = {{0, 0, -2}, {1, 0, -10}, {0, 3, -4}};
+    m.faces = {{0, 1, 2}};
+    Camera c = origin_camera();
+    const Camera framed = frame_depth(m, c);
+    EXPECT_DOUBLE_EQ(framed.near_plane, 0.99 * 2);
+    EXPECT_DOUBLE_EQ(framed.far_plane, 1.01 * 10);
+    const Projection p = project_with_sources(m, framed, {10, 10}, 1);
+    EXPECT_EQ(p.faces_cut + p.faces_hidden, 0u);
+    EXPECT_EQ(p.scene.triangles.size(), 1u);
+}
+
+// A floor under the eye that reaches behind it: the near plane comes as close as far / 2^20, so that all
+// of the floor in front of the eye but that sliver is drawn. One wholly behind keeps the camera's planes.
+TEST(FrameDepth, ComesCloseWhereTheMeshReachesBehindTheEye) {
+    Mesh floor;
+    floor.positions = {{-5, -1, 5}, {5, -1, 5}, {5, -1, -5}, {-5, -1, -5}};
+    floor.faces = {{0, 1, 2}, {0, 2, 3}};
+    const Camera framed = frame_depth(floor, origin_camera());
+    EXPECT_DOUBLE_EQ(framed.far_plane, 1.01 * 5);
+    EXPECT_DOUBLE_EQ(framed.near_plane, 1.01 * 5 * 0x1p-20);
+    const Projection p = project_with_sources(floor, framed, {10, 10}, 1);
+    EXPECT_EQ(p.faces_cut, 2u);
+    EXPECT_FALSE(p.scene.triangles.empty());
+
+    Mesh behind = floor;
+    for (Vec3& v : behind.positions) v.z = 1 + std::abs(v.z);
+    const Camera unchanged = frame_depth(behind, origin_camera());
+    EXPECT_EQ(unchanged.near_plane, origin_camera().near_plane);
+    EXPECT_EQ(unchanged.far_plane, origin_camera().far_plane);
 }
 
 TEST(Project, FarPlaneDoesNotClip) {

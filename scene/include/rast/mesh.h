@@ -51,6 +51,12 @@ void check_camera(const Camera& camera);
 // y up; near and far bracket the sphere.
 Camera frame(const Mesh& mesh, Viewport viewport);
 
+// `camera` with near and far framed for where it stands and looks: far beyond the mesh's farthest vertex
+// along the view direction, near where the mesh begins in front of the eye (a little before its nearest
+// vertex there, and no nearer than far / 2^20, where a vertex lies at or behind the eye). A mesh wholly
+// behind the eye keeps the camera's planes: nothing of it can be seen.
+Camera frame_depth(const Mesh& mesh, Camera camera);
+
 // The lecture's matrices. view_matrix: M_view = R_view * T_view, the camera at the origin looking down -z
 // with y up. projection_matrix: M_ortho * M_persp->ortho with the lecture's n = -near, f = -far, followed by
 // a flip of z so that, as the z-buffer wants, smaller z is nearer (near -> -1, far -> +1) and w = -z_view
@@ -62,6 +68,8 @@ Mat4 viewport_matrix(Viewport viewport);
 struct Projection {
     Scene scene;
     std::vector<std::size_t> source_face;  // per scene triangle, the mesh face it came from
+    std::size_t faces_cut = 0;             // faces the near plane cut, each drawn in part
+    std::size_t faces_hidden = 0;          // faces wholly behind the near plane, not drawn
 };
 
 // The mesh as seen by the camera. Faces crossing the near plane are clipped there in clip space into one
