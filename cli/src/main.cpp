@@ -10,7 +10,9 @@ int main(int argc, char** argv) {
     CLI::App app{
         "rast: a verified triangle rasterizer. An exact reference (CGAL orientation predicates, rational\n"
         "depth) and a fast path (fixed point or float; tiles, SIMD, threads), held against each other.\n"
-        "Screen space is y up, pixel centres at (i + 1/2, j + 1/2), the top-left tie rule, smaller z nearer."};
+        "Screen space is y up, pixel centres at (i + 1/2, j + 1/2), the top-left tie rule, smaller z nearer.\n"
+        "Exit status: 0 nothing found, 1 a verdict failed (replay, check), 2 bad usage, bad input or an engine\n"
+        "error."};
     app.require_subcommand(1);
     int status = 0;
     rast::cli::add_render_command(app);
@@ -20,13 +22,15 @@ int main(int argc, char** argv) {
 #ifdef RAST_WITH_BENCH
     rast::cli::add_bench_command(app);
 #endif
+    // docs/design.md's exit status: 0 nothing found, 1 a verdict failed, 2 the command could not do its job
+    // (bad usage, bad input, an engine's error).
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        return app.exit(e) == 0 ? 0 : 2;  // --help is no error
     } catch (const std::exception& e) {
         std::cerr << "rast: error: " << e.what() << '\n';
-        return 1;
+        return 2;
     }
     return status;
 }

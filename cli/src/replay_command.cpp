@@ -18,7 +18,8 @@ void add_replay_command(CLI::App& app, int& status) {
         "header names the properties that apply; each runs on the reference and on every fast precision it\n"
         "applies to. One line per case: PASS, FAIL with the property, engine and first differing sample, or\n"
         "ERROR path:line for a malformed file (the other cases still run). Then 'N passed, M failed' (errors\n"
-        "count as failed); the exit status is non-zero if any case failed. Files are only read.");
+        "count as failed). Exit status 0 when every case passed, 1 when a case failed, 2 when a case could not be\n"
+        "read or is malformed. Files are only read.");
     cmd->add_option("PATH", *paths, "Case files or folders")->default_str("corpus");
     cmd->callback([paths, &status] {
         if (paths->empty()) paths->push_back("corpus");
@@ -26,13 +27,15 @@ void add_replay_command(CLI::App& app, int& status) {
         const auto files = corpus_files(*paths);
         if (files.empty()) throw std::runtime_error("no .tri case found: nothing to replay");
         std::size_t passed = 0, failed = 0;
+        bool unusable = false;  // a case that is malformed or cannot be read: bad input, not a verdict
         for (const auto& entry : files) {
             const CaseReport report = replay_entry(entry, engines);
             std::cout << report.line << std::endl;
             (report.status == CaseReport::Status::pass ? passed : failed) += 1;
+            unusable = unusable || report.status == CaseReport::Status::error;
         }
         std::cout << passed << " passed, " << failed << " failed\n";
-        if (failed > 0) status = 1;
+        status = unusable ? 2 : failed > 0 ? 1 : 0;
     });
 }
 
