@@ -90,7 +90,7 @@ void add_diff_command(CLI::App& app) {
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
     cmd->remove_option(cmd->get_option("--engine"));  // one side is always the reference, the other the fast path
-    cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG");
+    cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG")->check(png_name);
     cmd->callback([o] { run_diff(*o); });
 }
 

@@ -5,6 +5,7 @@
 
 #include <exception>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
         "Exit status: 0 nothing found, 1 a verdict failed (replay, check), 2 bad usage, bad input or an engine\n"
         "error."};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "rast " RAST_VERSION);
     int status = 0;
     rast::cli::add_render_command(app);
     rast::cli::add_replay_command(app, status);
@@ -22,6 +24,19 @@ int main(int argc, char** argv) {
 #ifdef RAST_WITH_BENCH
     rast::cli::add_bench_command(app);
 #endif
+    // CLI11 would take an unknown first word for a missing command: name it, and the commands there are.
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string known;
+        bool found = false;
+        for (const CLI::App* command : app.get_subcommands({})) {
+            known += (known.empty() ? "" : ", ") + command->get_name();
+            found = found || command->get_name() == argv[1];
+        }
+        if (!found) {
+            std::cerr << "rast: error: unknown command '" << argv[1] << "' (the commands: " << known << ")\n";
+            return 2;
+        }
+    }
     // docs/design.md's exit status: 0 nothing found, 1 a verdict failed, 2 the command could not do its job
     // (bad usage, bad input, an engine's error).
     try {

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -96,6 +98,14 @@ std::string encode_png(const Image& image) {
         throw std::runtime_error(std::string("cannot encode PNG: ") + png.message);
     bytes.resize(size);
     return bytes;
+}
+
+std::string png_name(const std::string& path) {
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".png") return {};
+    return "'" + path + "': rast writes PNG pictures only; name the file .png";
 }
 
 }  // namespace rast::cli

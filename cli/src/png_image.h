@@ -39,4 +39,8 @@ void check_picture_size(std::int64_t width, std::int64_t height);
 // The image encoded as PNG: the bytes of the file.
 std::string encode_png(const Image& image);
 
+// A CLI11 check for a picture's path: rast writes PNG only, so a name that says otherwise (x.jpg) is
+// refused rather than given PNG bytes under it. Any letter case of .png passes.
+std::string png_name(const std::string& path);
+
 }  // namespace rast::cli

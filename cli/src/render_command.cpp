@@ -143,7 +143,8 @@ void add_render_command(CLI::App& app) {
     for (CLI::Option* view : mesh_view_options(*cmd)) def->excludes(view);
     add_engine_options(*cmd, o->engine);
     auto* image =
-        cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour");
+        cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour")
+            ->check(png_name);
     // Both shape the picture only: without one they would be ignored.
     cmd->add_option("--magnify", o->magnify, "Magnify the picture N times, nearest neighbour, so pixels stay sharp")
         ->check(CLI::Range(1, 64))

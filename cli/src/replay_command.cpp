@@ -4,9 +4,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <system_error>
 
 namespace rast::cli {
 
@@ -22,7 +24,13 @@ void add_replay_command(CLI::App& app, int& status) {
         "read or is malformed. Files are only read.");
     cmd->add_option("PATH", *paths, "Case files or folders")->default_str("corpus");
     cmd->callback([paths, &status] {
-        if (paths->empty()) paths->push_back("corpus");
+        if (paths->empty()) {
+            std::error_code unseen;
+            if (!std::filesystem::exists("corpus", unseen))
+                throw std::runtime_error("no case given, and no corpus folder here to replay: name the cases or "
+                                         "folders (rast replay PATH...), or run it where corpus/ is");
+            paths->push_back("corpus");
+        }
         const auto engines = all_engines();
         const auto files = corpus_files(*paths);
         if (files.empty()) throw std::runtime_error("no .tri case found: nothing to replay");

@@ -15,6 +15,8 @@ using rast::cli::testing::Result;
 using rast::cli::testing::rast;
 using rast::cli::testing::slurp;
 using rast::cli::testing::rast_piped;
+using rast::cli::testing::run;
+using rast::cli::shell_word;
 
 class Cli : public rast::cli::testing::TempDirTest {};
 
@@ -127,6 +129,33 @@ TEST_F(Cli, BadArgumentsAreRejected) {
     EXPECT_EQ(rast("frobnicate").status, 2);
     EXPECT_EQ(rast("render --help").status, 0);
     EXPECT_EQ(rast("render " + scene + " --ids-out " + out("ids.txt")).status, 0);
+}
+
+// What a first try runs into, each answered by name: the version; an unknown command, with the commands
+// there are; a picture name that is not .png (rast would have written PNG bytes under it); an option
+// given twice; replay with no corpus here to replay.
+TEST_F(Cli, FirstTriesAreAnsweredByName) {
+    const std::string scene = file("corner.tri", kCorner);
+    Result r = rast("--version");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_EQ(r.out, "rast " RAST_VERSION "\n");
+    r = rast("frobnicate");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(contains(r.out, "rast: error: unknown command 'frobnicate' (the commands: render, replay, check, "
+                                "diff")) << r.out;
+    for (const std::string command : {"render ", "diff "}) {
+        r = rast(command + scene + " -o " + out("picture.jpg"));
+        EXPECT_EQ(r.status, 2) << command;
+        EXPECT_TRUE(contains(r.out, "rast writes PNG pictures only; name the file .png")) << r.out;
+        EXPECT_FALSE(std::filesystem::exists(dir / "picture.jpg")) << command;
+    }
+    EXPECT_EQ(rast("render " + scene + " -o " + out("picture.PNG")).status, 0);
+    r = rast("render " + scene + " --engine fast --engine reference");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(contains(r.out, "--engine: At Most 1 required but received 2")) << r.out;
+    r = run("cd " + shell_word(dir.string()) + " && " + RAST_BINARY + " replay 2>&1");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(contains(r.out, "rast: error: no case given, and no corpus folder here to replay")) << r.out;
 }
 
 TEST_F(Cli, OutputIntoAMissingDirectoryFailsCleanly) {
@@ -373,7 +402,6 @@ TEST_F(Cli, BenchRefusesAMeshNoChosenSectionRenders) {
 
 // What rast writes as a command to type again: each word read back by the shell as it was.
 TEST(ShellWord, EveryWordReadsBackFromTheShellAsItWas) {
-    using rast::cli::shell_word;
     EXPECT_EQ(shell_word("corpus/fans/a-b_c.tri"), "corpus/fans/a-b_c.tri");  // nothing to quote
     EXPECT_EQ(shell_word("it's"), "'it'\\''s'");
     EXPECT_EQ(shell_word(""), "''");
