@@ -104,7 +104,7 @@ std::string png_name(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension == ".png") return {};
+    if (extension == ".png" || path.empty()) return {};  // an empty path is refused as such, later
     return "'" + path + "': rast writes PNG pictures only; name the file .png";
 }
 

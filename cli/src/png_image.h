@@ -40,7 +40,8 @@ void check_picture_size(std::int64_t width, std::int64_t height);
 std::string encode_png(const Image& image);
 
 // A CLI11 check for a picture's path: rast writes PNG only, so a name that says otherwise (x.jpg) is
-// refused rather than given PNG bytes under it. Any letter case of .png passes.
+// refused rather than given PNG bytes under it. Any letter case of .png passes, and so does an empty path,
+// which check_output_paths refuses as such.
 std::string png_name(const std::string& path);
 
 }  // namespace rast::cli

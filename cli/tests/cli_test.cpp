@@ -167,7 +167,8 @@ TEST_F(Cli, OutputIntoAMissingDirectoryFailsCleanly) {
 }
 
 // Each output option, given the scene's own path (spelt as given, spelt otherwise, or a hard link to it),
-// is refused before anything is written: the scene stays byte for byte what it was.
+// is refused before anything is written: the scene stays byte for byte what it was. -o is refused for
+// its name first: a scene is no PNG picture.
 TEST_F(Cli, AnOutputThatIsTheInputIsRefused) {
     const std::string scene = file("corner.tri", kCorner);
     std::filesystem::create_hard_link(scene, dir / "link.tri");
@@ -175,9 +176,11 @@ TEST_F(Cli, AnOutputThatIsTheInputIsRefused) {
         for (const std::string& same : {scene, (dir / "." / "corner.tri").string(), out("link.tri")}) {
             const Result r = rast("render " + scene + " " + option + " " + same);
             EXPECT_EQ(r.status, 2) << option << " " << same;
-            EXPECT_TRUE(contains(r.out, std::string(option) + " '" + same + "' is the same file as the input '" +
-                                            scene + "': refusing to overwrite it"))
-                << r.out;
+            const std::string why = std::string(option) == "-o"
+                                        ? "'" + same + "': rast writes PNG pictures only; name the file .png"
+                                        : std::string(option) + " '" + same + "' is the same file as the input '" +
+                                              scene + "': refusing to overwrite it";
+            EXPECT_TRUE(contains(r.out, why)) << r.out;
             EXPECT_FALSE(contains(r.out, "scene:")) << "it rendered first:\n" << r.out;
             EXPECT_EQ(read("corner.tri"), kCorner) << option << " " << same;
         }
@@ -186,12 +189,12 @@ TEST_F(Cli, AnOutputThatIsTheInputIsRefused) {
 TEST_F(Cli, TwoOutputsOnOneFileAreRefused) {
     const std::string scene = file("corner.tri", kCorner);
     std::filesystem::create_directories(dir / "sub");
-    const Result r = rast("render " + scene + " -o " + out("out.txt") + " --ids-out " + out("sub/../out.txt"));
+    const Result r = rast("render " + scene + " -o " + out("out.png") + " --ids-out " + out("sub/../out.png"));
     EXPECT_EQ(r.status, 2);
-    EXPECT_TRUE(contains(r.out, "--ids-out '" + out("sub/../out.txt") + "' is the same file as -o '" + out("out.txt") +
+    EXPECT_TRUE(contains(r.out, "--ids-out '" + out("sub/../out.png") + "' is the same file as -o '" + out("out.png") +
                                     "': give each output its own path"))
         << r.out;
-    EXPECT_FALSE(std::filesystem::exists(dir / "out.txt"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
 
 // A bare name that does not exist yet is the same file as that name under "./" (weakly_canonical alone
