@@ -13,6 +13,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <system_error>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,10 +21,20 @@
 namespace rast::cli {
 namespace {
 
+// The bunny: installed beside the program (PREFIX/bin/rast, PREFIX/share/rast/bunny.off), else the
+// source tree's, for a build that is run where it was built.
+std::string default_mesh() {
+    std::error_code unseen;
+    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", unseen);
+    const std::filesystem::path installed = program.parent_path().parent_path() / "share" / "rast" / "bunny.off";
+    if (!unseen && std::filesystem::is_regular_file(installed, unseen)) return installed.string();
+    return RAST_DEFAULT_MESH;
+}
+
 struct BenchOptions {
     bool quick = false;
     std::vector<std::string> only;
-    std::string mesh = RAST_DEFAULT_MESH;
+    std::string mesh = default_mesh();
     std::optional<std::string> json_out, plot_out, markdown_out;
     std::vector<std::string> notes;
 };
@@ -33,7 +44,7 @@ std::string command_line(const BenchOptions& o) {
     std::string command = "rast bench";
     if (o.quick) command += " --quick";
     for (const std::string& section : o.only) command += " --only " + section;
-    if (o.mesh != RAST_DEFAULT_MESH) command += " --mesh " + shell_word(o.mesh);
+    if (o.mesh != default_mesh()) command += " --mesh " + shell_word(o.mesh);
     if (o.json_out) command += " --json " + shell_word(*o.json_out);
     if (o.plot_out) command += " --plot " + shell_word(*o.plot_out);
     if (o.markdown_out) command += " --markdown " + shell_word(*o.markdown_out);
