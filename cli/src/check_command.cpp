@@ -238,7 +238,8 @@ bool run_check(const CheckOptions& o) {
         }
         std::cout << "rule:   closed mesh: every sample covered as often by front- as by back-facing triangles\n";
     } else {
-        std::cout << "rule:   no sample covered by two triangles that share an edge\n";
+        std::cout << "rule:   no sample covered by two triangles that share an edge (endpoints bit-identical; a crack\n"
+                     "        between edges that only nearly coincide is not seen)\n";
     }
     const Coverage coverage(scene, engine);
     const std::vector<Violation> violations =
@@ -263,8 +264,9 @@ void add_check_command(CLI::App& app, int& status) {
         "Count, for every sample, the triangles that cover it (no z-buffer). A closed mesh (OBJ, OFF, PLY,\n"
         "STL; OpenMesh tells) must be covered as often by front- as by back-facing triangles everywhere (facing\n"
         "as the engine rasterizes them: snapped, in the fixed modes); a .tri scene must not cover a sample twice\n"
-        "by triangles sharing an edge. Violations are printed, written as a corpus case, and make the exit\n"
-        "status 1.");
+        "by triangles sharing an edge, an edge being shared only where its endpoints are bit-identical (so a\n"
+        "crack or T-junction between edges that nearly coincide is not seen). Violations are printed, written\n"
+        "as a corpus case, and make the exit status 1.");
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
     // Coverage is counted triangle by triangle, on one thread: the option would be ignored.
