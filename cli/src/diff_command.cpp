@@ -51,6 +51,7 @@ void run_diff(const DiffOptions& o) {
     check_output_paths({o.input.path}, {{"-o", o.image_out}});
     const Scene scene = o.input.load();
     const Engine engine = o.engine.make();
+    note_unbounded_triangles(scene, engine);
     const Framebuffer exact = reference_engine().render(scene);
     const Framebuffer fast = engine.render(scene);
 

@@ -2,6 +2,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
+#include <iostream>
+#include <limits>
+
 namespace rast::cli {
 
 Engine EngineChoice::make(reference::Stats* stats) const {
@@ -38,6 +42,19 @@ void add_engine_options(CLI::App& command, EngineChoice& choice) {
         ->check(CLI::Range(0, 1024))
         ->check(for_fast_only)
         ->capture_default_str();
+}
+
+void note_unbounded_triangles(const Scene& scene, const Engine& engine) {
+    if (engine.exact() || !engine.precision) return;
+    std::size_t count = 0, first = 0;
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k)
+        if (!(fast::edge_error_bound(scene.triangles[k], *engine.precision, scene.viewport) <
+              std::numeric_limits<double>::infinity()))
+            first = count++ == 0 ? k : first;
+    if (count > 0)
+        std::cerr << "rast: note: " << engine.name << " cannot bound the edge functions of " << count
+                  << (count == 1 ? " triangle" : " triangles") << " (the first: triangle " << first
+                  << "), whose coordinates may overflow it: it may draw them wrongly or not at all\n";
 }
 
 }  // namespace rast::cli

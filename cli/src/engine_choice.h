@@ -24,6 +24,11 @@ struct EngineChoice {
     Engine make(reference::Stats* stats = nullptr) const;
 };
 
+// A float mode has no error bound for a triangle whose edge functions may overflow its type (coordinates
+// near the type's largest values): its coverage there is whatever IEEE arithmetic gives, and may be
+// nothing. Says so on stderr, naming the first such triangle; nothing for the exact engines.
+void note_unbounded_triangles(const Scene& scene, const Engine& engine);
+
 // Registers --engine, --precision and --threads on a subcommand; --precision and --threads are refused
 // unless the engine is the fast path (`choice.engine` as given, for a command that then removes --engine).
 void add_engine_options(CLI::App& command, EngineChoice& choice);

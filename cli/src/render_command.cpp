@@ -87,6 +87,7 @@ void run_render(const RenderOptions& o) {
 
     reference::Stats stats;
     const Engine engine = o.engine.make(&stats);
+    note_unbounded_triangles(scene, engine);
     const auto start = std::chrono::steady_clock::now();
     const Framebuffer fb = engine.render(scene);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
