@@ -68,8 +68,9 @@ void add_mesh_view_options(CLI::App& command, MeshView& view) {
 }  // namespace
 
 CLI::Option* add_scene_options(CLI::App& command, SceneInput& input) {
-    CLI::Option* scene = command.add_option("SCENE", input.path, "A .tri scene or a mesh file (OBJ, OFF, PLY, STL)")
-                             ->check(CLI::ExistingFile);
+    CLI::Option* scene =
+        command.add_option("SCENE", input.path, "A .tri scene or a mesh file (OBJ, OFF, PLY, STL); - reads a .tri scene from standard input")
+            ->check([](const std::string& path) { return path == kStandardInput ? std::string{} : CLI::ExistingFile(path); });
     command.add_option("--samples", input.samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
         ->check(CLI::IsMember({1, 4, 8, 16}));
     add_mesh_view_options(command, input.view);
@@ -115,6 +116,7 @@ Scene SceneInput::with_samples(Scene scene) const {
 }
 
 Scene SceneInput::load() const {
+    if (path == kStandardInput) return with_samples(read_tri_document(std::cin, "<stdin>").scene);
     if (!is_mesh()) return with_samples(read_tri_file(path));
     const Mesh mesh = read_mesh(path);
     const Viewport vp{view.width, view.height};

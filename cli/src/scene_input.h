@@ -20,9 +20,12 @@ struct MeshView {
     std::optional<double> fov_y_degrees, near_plane, far_plane;
 };
 
+// The SCENE that names standard input: a .tri scene read from it.
+inline constexpr const char* kStandardInput = "-";
+
 // A scene as the user names it on the command line.
 struct SceneInput {
-    std::string path;             // a .tri scene, or a mesh file
+    std::string path;             // a .tri scene, a mesh file, or kStandardInput
     MeshView view;                // for a mesh
     std::optional<int> samples;   // overrides the scene's samples per pixel
 

@@ -255,6 +255,16 @@ TEST_F(Cli, APipedSceneCanHaveOutputs) {
     EXPECT_EQ(read("ids.txt"), kCornerIds);
 }
 
+// SCENE - reads a .tri scene from standard input; its errors name <stdin> and the line.
+TEST_F(Cli, ADashReadsTheSceneFromStandardInput) {
+    Result r = rast_piped(kCorner, "render - --ids-out " + out("ids.txt"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(read("ids.txt"), kCornerIds);
+    r = rast_piped("viewport 4 3\ntri 0 0 0  4 0\n", "render -");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(contains(r.out, "rast: error: <stdin>:2: ")) << r.out;
+}
+
 // The scene's own sample count was within the size limit; the override's is not.
 TEST_F(Cli, ASampleCountAboveTheSizeLimitIsRefused) {
     const Result r = rast("render " + file("big.tri", "viewport 16384 16384\ntri 0 0 0 1 0 0 0 1 0\n") +
