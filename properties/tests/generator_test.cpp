@@ -3,11 +3,14 @@
 // overlapping scenes once lay almost all in the viewport's lower margin and covered no sample.
 #include <rast/exact_geometry.h>
 #include <rast/property_generators.h>
+#include <rast/tri_format.h>
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
 #include <cstdint>
+#include <sstream>
+#include <string>
 
 namespace {
 
@@ -34,6 +37,17 @@ TEST(Generators, ScenesCoverSamplesAtEverySize) {
         EXPECT_GT(covering_share(rast::gen::loose_triangles(), size), 0.75) << "size " << size;
         EXPECT_GT(covering_share(rast::gen::overlapping_triangles(), size), 0.85) << "size " << size;
     }
+}
+
+// A failing property shows its scene as .tri text (RapidCheck showed rast::Scene: <???>), which reads back
+// as the same scene.
+TEST(Generators, AFailingSceneIsShownAsTriText) {
+    const rast::Scene scene{{3, 2}, 4, {rast::Triangle{{rast::Vertex{0.5, 0, 1}, {3, 0.25, -2}, {0, 2, 0.1}}}}};
+    const std::string shown = rc::toString(scene);
+    EXPECT_EQ(shown, "\nviewport 3 2\nsamples 4\ntri  0x1p-1 0x0p+0 0x1p+0  0x1.8p+1 0x1p-2 -0x1p+1  0x0p+0 0x1p+1 "
+                     "0x1.999999999999ap-4\n");
+    std::istringstream in(shown);
+    EXPECT_EQ(rast::read_tri(in, "shown").triangles, scene.triangles);
 }
 
 }  // namespace

@@ -12,7 +12,16 @@
 
 #include <rapidcheck.h>
 
+#include <ostream>
 #include <vector>
+
+namespace rast {
+
+// How RapidCheck shows a scene in a failure (found by argument-dependent lookup): as .tri text, every
+// coordinate a hex-float, so that it can be pasted into a file and replayed.
+void showValue(const Scene& scene, std::ostream& os);
+
+}  // namespace rast
 
 namespace rast::gen {
 
