@@ -1,6 +1,5 @@
 #include "buffer_files.h"
 
-#include <cassert>
 #include <charconv>
 #include <cmath>
 
@@ -9,14 +8,14 @@ namespace {
 
 template <class Cell>
 std::string format_grid(const Framebuffer& fb, Cell cell) {
-    assert(fb.samples == 1);
     std::string out;
     char buffer[32];
     for (int j = fb.viewport.height - 1; j >= 0; --j) {
-        for (int i = 0; i < fb.viewport.width; ++i) {
-            if (i > 0) out += ' ';
-            out.append(buffer, cell(fb.index(i, j), buffer));
-        }
+        for (int i = 0; i < fb.viewport.width; ++i)
+            for (int s = 0; s < fb.samples; ++s) {
+                if (i > 0 || s > 0) out += ' ';
+                out.append(buffer, cell(fb.index(i, j, s), buffer));
+            }
         out += '\n';
     }
     return out;

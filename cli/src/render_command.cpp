@@ -118,14 +118,8 @@ void run_render(const RenderOptions& o) {
         const Image picture = o.coverage == "area" ? area_image(scene.viewport, area) : resolve_ids(fb);
         files.emplace_back(*o.image_out, encode_png(o.magnify == 1 ? picture : side_by_side({picture}, o.magnify)));
     }
-    if (o.ids_out || o.depth_out) {
-        // The id and depth files describe pixel centres: with several samples, render the centres once more.
-        Scene centres = scene;
-        centres.samples = 1;
-        const Framebuffer at_centres = scene.samples == 1 ? fb : engine.render(centres);
-        if (o.ids_out) files.emplace_back(*o.ids_out, format_ids(at_centres));
-        if (o.depth_out) files.emplace_back(*o.depth_out, format_depth(at_centres));
-    }
+    if (o.ids_out) files.emplace_back(*o.ids_out, format_ids(fb));
+    if (o.depth_out) files.emplace_back(*o.depth_out, format_depth(fb));
     if (o.coverage_out) files.emplace_back(*o.coverage_out, format_area(scene.viewport, area));
     write_files_atomic(std::vector<FileContent>(files.begin(), files.end()));
     for (const auto& file : files) std::cout << "wrote " << file.first << '\n';

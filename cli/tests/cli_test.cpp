@@ -255,6 +255,21 @@ TEST_F(Cli, APipedSceneCanHaveOutputs) {
     EXPECT_EQ(read("ids.txt"), kCornerIds);
 }
 
+// With N samples the buffers hold every sample: W x N entries a line, each pixel's samples in the pattern's
+// order. The triangle x / 2 + y <= 1 over two pixels, at depth 0.25; the 4x pattern's samples (0.375,
+// 0.875), (0.875, 0.625), (0.125, 0.375), (0.625, 0.125) of either pixel: the first two lie above the
+// hypotenuse, the last two below it.
+TEST_F(Cli, BuffersHoldEverySample) {
+    const std::string scene = file("half.tri", "viewport 2 1\ntri 0 0 0.25  2 0 0.25  0 1 0.25\n");
+    for (const std::string engine : {"--engine reference", "--engine fast --precision fixed8"}) {
+        const Result r = rast("render " + scene + " --samples 4 " + engine + " --ids-out " + out("ids.txt") +
+                              " --depth-out " + out("depth.txt"));
+        ASSERT_EQ(r.status, 0) << r.out;
+        EXPECT_EQ(read("ids.txt"), "-1 -1 0 0 -1 -1 0 0\n") << engine;
+        EXPECT_EQ(read("depth.txt"), "inf inf 0.25 0.25 inf inf 0.25 0.25\n") << engine;
+    }
+}
+
 // SCENE - reads a .tri scene from standard input; its errors name <stdin> and the line.
 TEST_F(Cli, ADashReadsTheSceneFromStandardInput) {
     Result r = rast_piped(kCorner, "render - --ids-out " + out("ids.txt"));
