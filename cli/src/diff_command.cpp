@@ -23,6 +23,7 @@ struct DiffOptions {
     SceneInput input;
     EngineChoice engine{.engine = "fast"};
     std::optional<std::string> image_out;
+    std::optional<int> magnify;  // none: small viewports magnified to kMinimumSide
 };
 
 // Small viewports are magnified (nearest neighbour) until the longer side is at least this many
@@ -50,13 +51,23 @@ Image disagreement(const Framebuffer& a, const Framebuffer& b, const Image& refe
 void run_diff(const DiffOptions& o) {
     check_output_paths({o.input.path}, {{"-o", o.image_out}});
     const Scene scene = o.input.load();
+    const Viewport vp = scene.viewport;
+    const int scale = o.magnify.value_or(
+        std::max(1, (kMinimumSide + std::max(vp.width, vp.height) - 1) / std::max(vp.width, vp.height)));
+    if (o.image_out) {
+        // Three panels side by side, with two separators, checked before the work.
+        try {
+            check_picture_size((std::int64_t{vp.width} * 3 + 2) * scale, std::int64_t{vp.height} * scale);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("--magnify " + std::to_string(scale) + ": " + e.what());
+        }
+    }
     const Engine engine = o.engine.make();
     note_unbounded_triangles(scene, engine);
     const Framebuffer exact = reference_engine().render(scene);
     const Framebuffer fast = engine.render(scene);
 
     std::size_t samples = 0, pixels = 0;
-    const Viewport vp = scene.viewport;
     for (int j = 0; j < vp.height; ++j)
         for (int i = 0; i < vp.width; ++i) {
             int differing = 0;
@@ -71,7 +82,6 @@ void run_diff(const DiffOptions& o) {
               << "differing pixels: " << pixels << " of " << std::size_t(vp.width) * vp.height << '\n';
     if (!o.image_out) return;
     const Image reference = resolve_ids(exact);
-    const int scale = std::max(1, (kMinimumSide + std::max(vp.width, vp.height) - 1) / std::max(vp.width, vp.height));
     const Image panels = side_by_side({reference, resolve_ids(fast), disagreement(exact, fast, reference)}, scale);
     write_file_atomic(*o.image_out, encode_png(panels));
     std::cout << "wrote " << *o.image_out << " (reference | " << engine.description
@@ -91,7 +101,13 @@ void add_diff_command(CLI::App& app) {
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
     cmd->remove_option(cmd->get_option("--engine"));  // one side is always the reference, the other the fast path
-    cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG")->check(png_name);
+    CLI::Option* image =
+        cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG")->check(png_name);
+    cmd->add_option("--magnify", o->magnify,
+                    "Magnify the picture N times, nearest neighbour (default: small viewports up to 512 pixels a "
+                    "side); a pixel's magenta is stronger the more of its samples differ")
+        ->check(CLI::Range(1, 64))
+        ->needs(image);
     cmd->callback([o] { run_diff(*o); });
 }
 

@@ -203,6 +203,32 @@ TEST_F(CorpusCommands, DiffRefusesToOverwriteItsSceneOrAnEmptyPath) {
     EXPECT_FALSE(contains(r.out, "differing")) << "it compared first:\n" << r.out;
 }
 
+// The PNG's width and height, from its IHDR chunk (big-endian, at bytes 16 and 20).
+std::pair<unsigned, unsigned> png_size(const std::string& bytes) {
+    const auto at = [&](std::size_t k) {
+        unsigned v = 0;
+        for (std::size_t b = 0; b < 4; ++b) v = v << 8 | static_cast<unsigned char>(bytes.at(k + b));
+        return v;
+    };
+    return {at(16), at(20)};
+}
+
+// --magnify sets the picture's scale: three 3x3 panels and two separators, each magnified twice, make
+// (3 * 3 + 2) * 2 = 22 by 6 pixels; without it a 3x3 viewport is magnified to 512 / 3, rounded up.
+// It shapes the picture only, so it needs -o.
+TEST_F(CorpusCommands, DiffMagnifiesThePictureAsAsked) {
+    const std::string scene = file("square.tri", kGoodCase);
+    Result r = rast("diff " + scene + " -o " + (dir / "d.png").string() + " --magnify 2");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(png_size(slurp(dir / "d.png")), (std::pair<unsigned, unsigned>{22, 6}));
+    r = rast("diff " + scene + " -o " + (dir / "d.png").string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(png_size(slurp(dir / "d.png")), (std::pair<unsigned, unsigned>{11 * 171, 3 * 171}));
+    r = rast("diff " + scene + " --magnify 2");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(contains(r.out, "--magnify requires --output")) << r.out;
+}
+
 // diff and check take the same scene and engine options as render, and refuse the same ignored ones.
 TEST_F(CorpusCommands, DiffAndCheckRefuseOptionsTheirSceneOrEngineWouldIgnore) {
     const std::string scene = file("fold.tri", kFold);
