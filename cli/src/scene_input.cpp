@@ -69,8 +69,12 @@ void add_mesh_view_options(CLI::App& command, MeshView& view) {
 
 CLI::Option* add_scene_options(CLI::App& command, SceneInput& input) {
     CLI::Option* scene =
-        command.add_option("SCENE", input.path, "A .tri scene or a mesh file (OBJ, OFF, PLY, STL); - reads a .tri scene from standard input")
-            ->check([](const std::string& path) { return path == kStandardInput ? std::string{} : CLI::ExistingFile(path); });
+        command
+            .add_option("SCENE", input.path,
+                        "A .tri scene or a mesh file (OBJ, OFF, PLY, STL); - reads a .tri scene from standard input")
+            ->check([](const std::string& path) {
+                return path == kStandardInput ? std::string{} : CLI::ExistingFile(path);
+            });
     command.add_option("--samples", input.samples, "Samples per pixel (1, 4, 8 or 16); overrides the scene's")
         ->check(CLI::IsMember({1, 4, 8, 16}));
     add_mesh_view_options(command, input.view);
@@ -84,8 +88,8 @@ std::vector<CLI::Option*> mesh_view_options(CLI::App& command) {
 bool SceneInput::is_mesh() const { return is_mesh_path(path); }
 
 std::string SceneInput::options() const {
-    // The shortest text that reads back as the same double; "=" keeps a leading minus from reading as an option.
-    const auto number = [](double value) { return shortest(value); };
+    // Numbers as the shortest text that reads back as the same double; "=" keeps a leading minus from
+    // reading as an option.
     std::string text;
     if (samples) text += " --samples " + std::to_string(*samples);
     if (!is_mesh()) return text;
@@ -94,12 +98,12 @@ std::string SceneInput::options() const {
         {"--eye", &view.eye}, {"--target", &view.target}, {"--up", &view.up}};
     for (const auto& [name, value] : vectors)
         if (*value)
-            text += std::string(" ") + name + "=" + number((*value)->x) + "," + number((*value)->y) + "," +
-                    number((*value)->z);
+            text += std::string(" ") + name + "=" + shortest((*value)->x) + "," + shortest((*value)->y) + "," +
+                    shortest((*value)->z);
     const std::pair<const char*, const std::optional<double>*> scalars[] = {
         {"--fov", &view.fov_y_degrees}, {"--near", &view.near_plane}, {"--far", &view.far_plane}};
     for (const auto& [name, value] : scalars)
-        if (*value) text += std::string(" ") + name + "=" + number(**value);
+        if (*value) text += std::string(" ") + name + "=" + shortest(**value);
     return text;
 }
 
