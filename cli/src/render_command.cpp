@@ -14,10 +14,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -53,6 +55,27 @@ Image area_image(Viewport vp, const std::vector<reference::Rational>& area) {
             std::fill(out, out + 3, static_cast<std::uint8_t>(a * 255 + 0.5));
         }
     }
+    return image;
+}
+
+// The depth buffer as a grey ramp over its finite depths: the nearest white, the farthest a fifth of it,
+// empty samples black; a pixel the average of its samples. One finite depth alone is white.
+Image depth_image(const Framebuffer& fb) {
+    double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
+    for (const double z : fb.depth)
+        if (std::isfinite(z)) nearest = std::min(nearest, z), farthest = std::max(farthest, z);
+    const double span = farthest - nearest;
+    Image image(fb.viewport.width, fb.viewport.height);
+    for (int j = 0; j < fb.viewport.height; ++j)
+        for (int i = 0; i < fb.viewport.width; ++i) {
+            double sum = 0;
+            for (int s = 0; s < fb.samples; ++s) {
+                const double z = fb.depth[fb.index(i, j, s)];
+                if (std::isfinite(z)) sum += 1 - 0.8 * (span > 0 ? (z - nearest) / span : 0);
+            }
+            std::uint8_t* out = image.at(i, fb.viewport.height - 1 - j);
+            std::fill(out, out + 3, static_cast<std::uint8_t>(sum / fb.samples * 255 + 0.5));
+        }
     return image;
 }
 
@@ -115,7 +138,9 @@ void run_render(const RenderOptions& o) {
     // Every file's bytes first, so that nothing is written unless all of them could be made.
     std::vector<std::pair<std::string, std::string>> files;
     if (o.image_out) {
-        const Image picture = o.coverage == "area" ? area_image(scene.viewport, area) : resolve_ids(fb);
+        const Image picture = o.coverage == "area"    ? area_image(scene.viewport, area)
+                              : o.coverage == "depth" ? depth_image(fb)
+                                                      : resolve_ids(fb);
         files.emplace_back(*o.image_out, encode_png(o.magnify == 1 ? picture : side_by_side({picture}, o.magnify)));
     }
     if (o.ids_out) files.emplace_back(*o.ids_out, format_ids(fb));
@@ -146,8 +171,9 @@ void add_render_command(CLI::App& app) {
         ->capture_default_str()
         ->needs(image);
     cmd->add_option("--coverage", o->coverage,
-                    "What the picture shows: 'samples' (ids, samples averaged) or 'area' (exact area coverage)")
-        ->check(CLI::IsMember({"samples", "area"}))
+                    "What the picture shows: 'samples' (ids, samples averaged), 'area' (exact area coverage) or "
+                    "'depth' (a grey ramp, nearest white, over the finite depths)")
+        ->check(CLI::IsMember({"samples", "area", "depth"}))
         ->capture_default_str()
         ->needs(image);
     cmd->add_option("--ids-out", o->ids_out,

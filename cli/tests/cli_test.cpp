@@ -1,12 +1,15 @@
 // The command line, end to end: files in, exit status, messages and files out.
 #include "cli_harness.h"
 
+#include <png.h>
 #include <sys/stat.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -393,6 +396,37 @@ TEST_F(Cli, NearAndFarAreFramedForTheCameraInUse) {
     const Result seen = rast("render " + floor + " --width 16 --height 16 --ids-out " + out("ids.txt"));
     ASSERT_EQ(seen.status, 0) << seen.out;
     EXPECT_FALSE(contains(seen.out, "note")) << seen.out;
+}
+
+// A PNG's pixels as 8-bit RGB, rows top first (libpng's simplified reader); empty if it cannot be read.
+std::vector<std::uint8_t> png_rgb(const std::filesystem::path& file, unsigned& width) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, file.c_str())) return {};
+    image.format = PNG_FORMAT_RGB;
+    std::vector<std::uint8_t> rgb(PNG_IMAGE_SIZE(image));
+    if (!png_image_finish_read(&image, nullptr, rgb.data(), 0, nullptr)) return {};
+    width = image.width;
+    return rgb;
+}
+
+// --coverage depth: a grey ramp over the finite depths. Pixel 0 holds depth 0.5, the nearest (white);
+// pixels 1 and 2 depth 1, the farthest (a fifth of white, 51). With 4 samples, pixel 2's sample (2.875,
+// 0.625) lies on the second triangle's right edge x + y = 3.5, which does not own it, and is empty; the
+// other three are inside: 3/4 of 51, 38.
+TEST_F(Cli, TheDepthPictureIsAGreyRampOverFiniteDepths) {
+    const std::string scene =
+        file("two.tri", "viewport 3 1\ntri 0 0 0.5  1.5 0 0.5  0 1.5 0.5\ntri 1 0 1  3.5 0 1  1 2.5 1\n");
+    Result r = rast("render " + scene + " --coverage depth -o " + out("depth.png"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    unsigned width = 0;
+    EXPECT_EQ(png_rgb(dir / "depth.png", width), (std::vector<std::uint8_t>{255, 255, 255, 51, 51, 51, 51, 51, 51}));
+    EXPECT_EQ(width, 3u);
+    r = rast("render " + scene + " --samples 4 --coverage depth -o " + out("depth.png"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    const std::vector<std::uint8_t> rgb = png_rgb(dir / "depth.png", width);
+    ASSERT_EQ(rgb.size(), 9u);
+    EXPECT_EQ(rgb[6], 38);
 }
 
 // The reference is exact; it would ignore the fast path's precision and threads.
