@@ -3,6 +3,7 @@
 #pragma once
 
 #include <rast/properties.h>
+#include <rast/property_generators.h>  // also how RapidCheck shows a Scene: every file that draws one needs it
 
 #include <rapidcheck.h>
 
