@@ -154,8 +154,9 @@ TEST_F(CorpusCommands, CheckNamesTheFirstPairSharingAnEdgeAtEachSampleAndNothing
     const std::string bc = "covered 3 times, by triangles 2 and 3, which share an edge\n";
     const std::string ad = "covered 3 times, by triangles 1 and 4, which share an edge\n";
     const std::string e = "covered 4 times, by triangles 0 and 5, which share an edge\n";
-    EXPECT_TRUE(contains(r.out, "rule:   no sample covered by two triangles that share an edge (endpoints bit-identical; a crack\n"
-                               "        between edges that only nearly coincide is not seen)\n"
+    EXPECT_TRUE(contains(r.out, "rule:   no sample covered by two triangles that share an edge (endpoints "
+                                "bit-identical; a crack\n"
+                                "        between edges that only nearly coincide is not seen)\n"
                                 "  pixel (0, 0) sample 0 at (0.5, 0.5): covered 3 times, " + fold +
                                 "  pixel (1, 0) sample 0 at (1.5, 0.5): " + e +
                                 "  pixel (2, 0) sample 0 at (2.5, 0.5): " + e +

@@ -97,8 +97,9 @@ TEST_F(Replay, HalvedDepthBoundFailsTheCoplanarTwins) {
     ASSERT_EQ(halved.status, CaseReport::Status::fail) << halved.line;
     bool at_the_twins_sample = false;
     for (const auto& f : halved.failures)
-        at_the_twins_sample = at_the_twins_sample ||
-                              (f.property == "fixed_matches_reference" && f.detail.find("(16.5, 17.5)") != std::string::npos);
+        at_the_twins_sample =
+            at_the_twins_sample ||
+            (f.property == "fixed_matches_reference" && f.detail.find("(16.5, 17.5)") != std::string::npos);
     EXPECT_TRUE(at_the_twins_sample) << halved.line;
 }
 

@@ -176,7 +176,8 @@ TEST(PlaneBound, CoplanarTwinsStraddleAMidpoint) {
     for (int n = 0; n < 20000 && halved <= 1; ++n) {
         Triangle t;
         const double z0 = 1 + base(rng) * 0x1p-52;
-        for (int v = 0; v < 3; ++v) t.v[v] = {grid(rng) / 256.0, grid(rng) / 256.0, z0 + (v == 0 ? 0 : rise(rng) * 0x1p-52)};
+        for (int v = 0; v < 3; ++v)
+            t.v[v] = {grid(rng) / 256.0, grid(rng) / 256.0, z0 + (v == 0 ? 0 : rise(rng) * 0x1p-52)};
         const Triangle twin{{t.v[1], t.v[2], t.v[0]}};
         const std::optional<Placed> s = place<Fault::none>(t, c), w = place<Fault::none>(twin, c);
         if (!s || !w) continue;
@@ -295,7 +296,8 @@ std::vector<EdgeCase> edge_cases(int count) {
             for (double& x : e) x = float(x);
             climb(e, edge_ratio<Sound, T>, rng, 300, float_ulps);
         } else {
-            climb(e, edge_ratio<Sound, T>, rng, 300, std::is_same_v<T, float> ? float_sixteenths : filters::testing::nudge);
+            const auto step = std::is_same_v<T, float> ? float_sixteenths : filters::testing::nudge;
+            climb(e, edge_ratio<Sound, T>, rng, 300, step);
         }
         cases.push_back(e);
     }

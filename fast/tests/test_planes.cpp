@@ -1,10 +1,11 @@
 // The depth planes of setup.h. Their error bound against exact rational arithmetic (GMP): at every sample
-// of the bounding box, the double evaluation the kernels make is within err of the exact plane through
-// the corners (test_filter_bounds.cpp shows on adversarial depths that no term of it can be spared). And small_planes, the small lane's planes set up several at once, on every
-// SIMD target: on a narrow triangle, the bits of the narrow plane in scalar code; its gradient make_plane's
-// (the same rounded operations), and its bound no larger (it leaves out only error terms that are zero
-// there). Triangles from the small lane's own records in every fixed mode, and placed ones of every path,
-// with depths of every magnitude and sign, flat planes and near-degenerate corners.
+// of the bounding box, the double evaluation the kernels make is within err of the exact plane through the
+// corners (test_filter_bounds.cpp shows on adversarial depths that no term of it can be spared). And
+// small_planes, the small lane's planes set up several at once, on every SIMD target: on a narrow triangle,
+// the bits of the narrow plane in scalar code; its gradient make_plane's (the same rounded operations), and
+// its bound no larger (it leaves out only error terms that are zero there). Triangles from the small lane's
+// own records in every fixed mode, and placed ones of every path, with depths of every magnitude and sign,
+// flat planes and near-degenerate corners.
 #include "setup.h"
 
 #include <gmpxx.h>

@@ -76,7 +76,8 @@ bool near_an_edge(const Engine& engine, const Triangle& t, SamplePosition p) {
     const std::array<double, 3> bound = engine.edge_error_bound_at(t, p.x, p.y);
     for (int k = 0; k < 3; ++k) {
         if (std::isinf(bound[k])) return true;
-        if (abs(rast::properties::edge_function(t.v[k], t.v[(k + 1) % 3], p.x, p.y)) <= Rational(bound[k])) return true;
+        if (abs(rast::properties::edge_function(t.v[k], t.v[(k + 1) % 3], p.x, p.y)) <= Rational(bound[k]))
+            return true;
     }
     return false;
 }

@@ -61,12 +61,14 @@ CaseCheck check_case(const Scene& scene, std::span<const Property* const> proper
             Outcome outcome = p->verdict_on(scene, engine);
             if (outcome.verdict == Outcome::Verdict::not_applicable) {
                 ++result.not_applicable;
-                if (why_not_here.empty()) why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
+                if (why_not_here.empty())
+                    why_not_here = std::string(p->name) + " [" + engine.name + "]: " + outcome.detail;
                 continue;
             }
             ++result.checks;
             checked = true;
-            if (outcome.failed()) result.failures.push_back({std::string(p->name), engine.name, std::move(outcome.detail)});
+            if (outcome.failed())
+                result.failures.push_back({std::string(p->name), engine.name, std::move(outcome.detail)});
         }
         if (applies && !checked && result.unchecked.empty()) result.unchecked = why_not_here;
     }
