@@ -21,40 +21,55 @@ locale_t c_locale() {
 }
 }  // namespace
 
-std::vector<std::string> split_tokens(std::string_view line) {
-    std::vector<std::string> tokens;
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
+    tokens.clear();
     std::size_t k = 0;
     while (k < line.size()) {
         while (k < line.size() && is_space(line[k])) ++k;
         const std::size_t begin = k;
         while (k < line.size() && !is_space(line[k])) ++k;
-        if (k > begin) tokens.emplace_back(line.substr(begin, k - begin));
+        if (k > begin) tokens.push_back(line.substr(begin, k - begin));
     }
-    return tokens;
 }
 
-double parse_finite_double(const std::string& token, const std::string& file, std::int64_t line) {
+std::vector<std::string> split_tokens(std::string_view line) {
+    std::vector<std::string_view> views;
+    split_tokens(line, views);
+    return {views.begin(), views.end()};
+}
+
+double parse_finite_double(std::string_view token, const std::string& file, std::int64_t line) {
+    // The fast road: from_chars rounds correctly, as glibc's strtod does, so where it reads the whole token
+    // as a finite number the two agree. It takes no '+' and no "0x", and calls a number out of range where
+    // strtod rounds it (to zero, or to infinity); those, and every error, take strtod's road.
+    double fast = 0;
+    const char* last = token.data() + token.size();
+    if (const auto [end, error] = std::from_chars(token.data(), last, fast);
+        error == std::errc{} && end == last && std::isfinite(fast))
+        return fast;
+
     // Tokens hold no whitespace, so strtod's skipping of leading blanks never applies; c_str() stops at
     // an embedded NUL, which the length check below then reports as trailing characters.
-    const char* begin = token.c_str();
+    const std::string text(token);
+    const char* begin = text.c_str();
     char* end = nullptr;
     errno = 0;
     const double value = strtod_l(begin, &end, c_locale());
     const bool overflow = errno == ERANGE && std::isinf(value);
     if (end == begin)
-        throw ParseError(file, line, "expected a number, got " + quote_token(token));
-    if (static_cast<std::size_t>(end - begin) != token.size())
-        throw ParseError(file, line, "bad number " + quote_token(token) + ": trailing characters " +
-                                         quote_token(token.substr(static_cast<std::size_t>(end - begin))));
-    if (std::isnan(value)) throw ParseError(file, line, "NaN is not allowed: " + quote_token(token));
-    if (overflow) throw ParseError(file, line, "number " + quote_token(token) + " overflows to infinity");
-    if (std::isinf(value)) throw ParseError(file, line, "infinity is not allowed: " + quote_token(token));
+        throw ParseError(file, line, "expected a number, got " + quote_token(text));
+    if (static_cast<std::size_t>(end - begin) != text.size())
+        throw ParseError(file, line, "bad number " + quote_token(text) + ": trailing characters " +
+                                         quote_token(text.substr(static_cast<std::size_t>(end - begin))));
+    if (std::isnan(value)) throw ParseError(file, line, "NaN is not allowed: " + quote_token(text));
+    if (overflow) throw ParseError(file, line, "number " + quote_token(text) + " overflows to infinity");
+    if (std::isinf(value)) throw ParseError(file, line, "infinity is not allowed: " + quote_token(text));
     return value;
 }
 
 float read_float(const std::string& token) { return strtof_l(token.c_str(), nullptr, c_locale()); }
 
-long long parse_integer(const std::string& token, const std::string& file, std::int64_t line) {
+long long parse_integer(std::string_view token, const std::string& file, std::int64_t line) {
     long long value = 0;
     const char* last = token.data() + token.size();
     const auto [end, error] = std::from_chars(token.data(), last, value);

@@ -16,7 +16,7 @@ ParseError::ParseError(std::string file_, std::int64_t line_, std::string messag
       line(line_),
       message(std::move(message_)) {}
 
-std::string quote_token(const std::string& token) {
+std::string quote_token(std::string_view token) {
     constexpr std::size_t kMaxShown = 40;
     std::string out = "'";
     for (std::size_t k = 0; k < token.size() && k < kMaxShown; ++k) {

@@ -60,18 +60,18 @@ std::optional<std::pair<std::string, std::string>> header_entry(std::string_view
     return std::pair{std::string(line.substr(0, colon)), std::string(trim(line.substr(colon + 1)))};
 }
 
-int parse_int(const std::string& token, const std::string& file, std::int64_t line) {
+int parse_int(std::string_view token, const std::string& file, std::int64_t line) {
     const long long value = detail::parse_integer(token, file, line);
     if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
         throw ParseError(file, line, "integer " + quote_token(token) + " is out of range");
     return static_cast<int>(value);
 }
 
-void expect_arity(const std::vector<std::string>& tokens, std::size_t count, const char* what,
+void expect_arity(const std::vector<std::string_view>& tokens, std::size_t count, const char* what,
                   const std::string& file, std::int64_t line) {
     const std::size_t got = tokens.size() - 1;
     if (got != count)
-        throw ParseError(file, line, "'" + tokens[0] + "' expects " + what + ", got " +
+        throw ParseError(file, line, "'" + std::string(tokens[0]) + "' expects " + what + ", got " +
                                          std::to_string(got) + (got == 1 ? " value" : " values"));
 }
 
@@ -92,17 +92,18 @@ TriDocument read_tri_document(std::istream& in, const std::string& name) {
     std::int64_t line_number = 0, viewport_line = 0, samples_line = 0;
     bool in_header = true;
     std::string line;
+    std::vector<std::string_view> tokens;
     while (std::getline(in, line)) {
         ++line_number;
         const std::string_view content = line_content(line, name, line_number);
-        const std::vector<std::string> tokens = detail::split_tokens(content.substr(0, content.find('#')));
+        detail::split_tokens(content.substr(0, content.find('#')), tokens);
         if (tokens.empty()) {
             if (in_header)
                 if (auto entry = header_entry(content)) doc.header.push_back(std::move(*entry));
             continue;
         }
         in_header = false;
-        const std::string& keyword = tokens[0];
+        const std::string keyword(tokens[0]);
         if (keyword == "tri") {
             expect_arity(tokens, 9, "9 numbers (three vertices x y z)", name, line_number);
             Triangle t;

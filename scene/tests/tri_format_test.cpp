@@ -7,8 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
+#include <random>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace rast {
 namespace {
@@ -68,6 +73,47 @@ TEST(TriFormat, NumbersReadAsStrtodDoes) {
     EXPECT_EQ(v[2].x, std::ldexp(1.0, 60));
     EXPECT_EQ(bits(v[2].y), 0x8000000000000000ULL);
     EXPECT_EQ(v[2].z, 100.0);
+}
+
+// The reader takes a fast road (from_chars) and strtod's; whichever it takes, the value is strtod's. The
+// hard spellings: exact midpoints between adjacent doubles (ties to even) and a hair either side of them,
+// hundreds of digits long, and what only strtod reads ('+', hex floats, underflow to zero or a subnormal).
+TEST(TriFormat, EverySpellingReadsAsStrtodReadsIt) {
+    std::vector<std::string> spellings = {"+1.5", "+0x1p-3", "1e-400", "-1e-400", "2.4703282292062327e-324",
+                                          "2.4703282292062328e-324", "2.2250738585072011e-308", ".5", "5.",
+                                          "00000000000000000000000000001.25", "9007199254740993"};
+    std::mt19937_64 random(20261126);
+    char text[1400];
+    for (int k = 0; k < 2000; ++k) {
+        double d = std::bit_cast<double>(random());
+        if (!std::isfinite(d)) continue;
+        for (const char* format : {"%.17g", "%.16g", "%.25e", "%a"}) {
+            std::snprintf(text, sizeof text, format, d);
+            spellings.emplace_back(text);
+        }
+        // The midpoint to the next double up fits a long double's 64-bit significand exactly; "%.1100Le"
+        // writes it in full (a double's exact expansion ends within 1100 digits), with trailing zeros.
+        const long double mid = (static_cast<long double>(d) + std::nextafter(d, INFINITY)) / 2;
+        if (!std::isfinite(static_cast<double>(std::nextafter(d, INFINITY)))) continue;
+        std::snprintf(text, sizeof text, "%.1100Le", mid);
+        std::string exact(text);
+        spellings.push_back(exact);
+        const std::size_t e = exact.find('e');
+        const std::size_t last = exact.find_last_not_of('0', e - 1);
+        ASSERT_LT(last + 1, e) << "the expansion of " << exact.substr(0, 40) << " has no trailing zero";
+        exact[last + 1] = '1';  // a hair above the midpoint
+        spellings.push_back(exact);
+        exact[last] = static_cast<char>(exact[last] - 1);  // a hair below: ...d000 becomes ...(d-1)900
+        exact[last + 1] = '9';
+        spellings.push_back(exact);
+    }
+    std::string tri = "viewport 4 4\n";
+    for (std::size_t k = 0; k < spellings.size(); ++k) tri += "tri " + spellings[k] + " 0 0 0 0 0 0 0 0\n";
+    const Scene s = parse(tri);
+    ASSERT_EQ(s.triangles.size(), spellings.size());
+    for (std::size_t k = 0; k < spellings.size(); ++k)
+        EXPECT_EQ(bits(s.triangles[k].v[0].x), bits(std::strtod(spellings[k].c_str(), nullptr)))
+            << spellings[k].substr(0, 60) << " (" << spellings[k].size() << " characters)";
 }
 
 TEST(TriFormat, HexFloatIsC99) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace rast {
 
@@ -19,6 +20,6 @@ struct ParseError : std::runtime_error {
 
 // A token quoted for an error message: at most 40 characters, non-printable bytes escaped, so a binary
 // file fed to a text reader gives a readable message.
-std::string quote_token(const std::string& token);
+std::string quote_token(std::string_view token);
 
 }  // namespace rast
