@@ -4,6 +4,7 @@
 #include "engine_choice.h"
 #include "output_paths.h"
 #include "png_image.h"
+#include "progress_meter.h"
 #include "scene_input.h"
 
 #include <rast/atomic_file.h>
@@ -64,7 +65,8 @@ void run_diff(const DiffOptions& o) {
     }
     const Engine engine = o.engine.make();
     note_unbounded_triangles(scene, engine);
-    const Framebuffer exact = reference_engine().render(scene);
+    ProgressMeter meter = stderr_meter("reference render", "triangles");
+    const Framebuffer exact = reference_engine(nullptr, meter.progress()).render(scene);
     const Framebuffer fast = engine.render(scene);
 
     std::size_t samples = 0, pixels = 0;

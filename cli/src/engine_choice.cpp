@@ -5,11 +5,12 @@
 #include <cstddef>
 #include <iostream>
 #include <limits>
+#include <utility>
 
 namespace rast::cli {
 
-Engine EngineChoice::make(reference::Stats* stats) const {
-    if (is_reference()) return reference_engine(stats);
+Engine EngineChoice::make(reference::Stats* stats, Progress progress) const {
+    if (is_reference()) return reference_engine(stats, std::move(progress));
     // The option's validator has already accepted the name.
     return fast_engine(*fast::parse_precision(precision), threads);
 }

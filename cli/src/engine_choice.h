@@ -4,6 +4,7 @@
 
 #include <rast/engine.h>
 #include <rast/fast.h>
+#include <rast/progress.h>
 #include <rast/reference.h>
 #include <rast/scene.h>
 
@@ -20,8 +21,9 @@ struct EngineChoice {
     int threads = 1;                   // fast only; 0: all hardware threads
 
     bool is_reference() const { return engine == "reference"; }
-    // The engine chosen; `stats`, for the reference, receives its exact-arithmetic counts.
-    Engine make(reference::Stats* stats = nullptr) const;
+    // The engine chosen; for the reference, `stats` receives its exact-arithmetic counts and `progress`
+    // hears how far a render has come (the fast path is quick enough to need no word).
+    Engine make(reference::Stats* stats = nullptr, Progress progress = {}) const;
 };
 
 // A float mode has no error bound for a triangle whose edge functions may overflow its type (coordinates

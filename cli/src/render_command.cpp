@@ -5,6 +5,7 @@
 #include "engine_choice.h"
 #include "output_paths.h"
 #include "png_image.h"
+#include "progress_meter.h"
 #include "scene_input.h"
 
 #include <rast/atomic_file.h>
@@ -109,7 +110,8 @@ void run_render(const RenderOptions& o) {
     }
 
     reference::Stats stats;
-    const Engine engine = o.engine.make(&stats);
+    ProgressMeter meter = stderr_meter("reference render", "triangles");
+    const Engine engine = o.engine.make(&stats, meter.progress());
     note_unbounded_triangles(scene, engine);
     const auto start = std::chrono::steady_clock::now();
     const Framebuffer fb = engine.render(scene);
@@ -134,7 +136,9 @@ void run_render(const RenderOptions& o) {
     }
 
     const bool want_area = o.coverage == "area" || o.coverage_out;
-    const auto area = want_area ? reference::coverage_area(scene) : std::vector<reference::Rational>{};
+    ProgressMeter area_meter = stderr_meter("exact area", "triangles");
+    const auto area = want_area ? reference::coverage_area(scene, area_meter.progress())
+                                : std::vector<reference::Rational>{};
     // Every file's bytes first, so that nothing is written unless all of them could be made.
     std::vector<std::pair<std::string, std::string>> files;
     if (o.image_out) {

@@ -25,9 +25,9 @@ std::optional<int> Engine::snap_bits() const {
     return std::nullopt;
 }
 
-Engine reference_engine(reference::Stats* stats) {
+Engine reference_engine(reference::Stats* stats, Progress progress) {
     return {"reference", "reference (exact)", std::nullopt,
-            [stats](const Scene& s, Framebuffer& fb) { fb = reference::render(s, stats); },
+            [stats, progress](const Scene& s, Framebuffer& fb) { fb = reference::render(s, stats, progress); },
             [](const Triangle& t, Viewport vp, int n) { return reference::covered_samples(t, vp, n); },
             nullptr};
 }

@@ -122,16 +122,19 @@ Rational pixel_area(const Triangle& t, int i, int j) {
     return area_left_of(strip, Rational(i) + 1) - area_left_of(strip, Rational(i));
 }
 
-std::vector<Rational> coverage_area(const Scene& scene) {
+std::vector<Rational> coverage_area(const Scene& scene, const Progress& progress) {
     const Viewport vp = scene.viewport;
     detail::require_valid(vp, 1);  // one area per pixel, whatever the samples
     for (std::size_t id = 0; id < scene.triangles.size(); ++id) detail::require_finite(scene.triangles[id], id);
     std::vector<Rational> coverage(static_cast<std::size_t>(vp.width) * static_cast<std::size_t>(vp.height));
-    for (const Triangle& t : scene.triangles) {
+    report_progress(progress, 0, scene.triangles.size());
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
+        const Triangle& t = scene.triangles[k];
         const detail::PixelBox box = detail::pixel_box(t, vp);
-        if (box.empty()) continue;
-        for (int j = box.j0; j <= box.j1; ++j)
-            accumulate_row(t, j, box.i0, box.i1, &coverage[static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width)]);
+        for (int j = box.j0; j <= box.j1 && !box.empty(); ++j)
+            accumulate_row(t, j, box.i0, box.i1,
+                           &coverage[static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width)]);
+        report_progress(progress, k + 1, scene.triangles.size());
     }
     return coverage;
 }

@@ -439,7 +439,7 @@ Rational depth_at(const Triangle& t, double x, double y) {
     return detail::ExactDepth(t).at(x, y);
 }
 
-Framebuffer render(const Scene& scene, Stats* stats_out) {
+Framebuffer render(const Scene& scene, Stats* stats_out, const Progress& progress) {
     detail::require_valid(scene.viewport, scene.samples);
     const auto pattern = sample_pattern(scene.samples);
     if (scene.triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
@@ -454,31 +454,35 @@ Framebuffer render(const Scene& scene, Stats* stats_out) {
     std::vector<detail::PixelBox> boxes;
     boxes.reserve(scene.triangles.size());
     for (const Triangle& t : scene.triangles) boxes.push_back(detail::pixel_box(t, scene.viewport));
-    for (const std::size_t k : tile_order(boxes, scene.viewport)) {
+    const std::vector<std::size_t> order = tile_order(boxes, scene.viewport);
+    report_progress(progress, 0, order.size());
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        const std::size_t k = order[n];
         const Triangle& t = scene.triangles[k];
-        const auto ccw = rasterizer.prepare(t);
-        if (!ccw) continue;
-        const auto id = static_cast<std::int32_t>(k);
-        std::optional<detail::BoundedPlane> plane;  // made at the first covered run: many tiny triangles have none
-        bool plane_made = false;
-        rasterizer.for_each_run(*ccw, boxes[k], pattern, [&](int j, int s, Run run) {
-            stats.samples_covered += static_cast<std::uint64_t>(run.size());
-            if (!plane_made) {
-                plane = detail::BoundedPlane::make(t);
-                plane_made = true;
-            }
-            // The run's samples, column by column: x = i + sx steps by 1 exactly (multiples of 1/16
-            // below 2^31), the framebuffer index by the pattern's size.
-            const double y = j + pattern[s].y;
-            Sample q{fb.index(run.first, j, s), run.first + pattern[s].x, y};
-            const std::size_t step = pattern.size();
-            if (!plane) {
-                for (int i = run.first; i <= run.last; ++i, q.index += step, q.x += 1)
-                    zbuffer.offer(id, q, std::nullopt);
-                return;
-            }
-            stats.depth_tests += offer_run(zbuffer, id, *plane, q, run.size(), step);
-        });
+        if (const auto ccw = rasterizer.prepare(t)) {
+            const auto id = static_cast<std::int32_t>(k);
+            std::optional<detail::BoundedPlane> plane;  // made at the first covered run: many tiny triangles have none
+            bool plane_made = false;
+            rasterizer.for_each_run(*ccw, boxes[k], pattern, [&](int j, int s, Run run) {
+                stats.samples_covered += static_cast<std::uint64_t>(run.size());
+                if (!plane_made) {
+                    plane = detail::BoundedPlane::make(t);
+                    plane_made = true;
+                }
+                // The run's samples, column by column: x = i + sx steps by 1 exactly (multiples of 1/16
+                // below 2^31), the framebuffer index by the pattern's size.
+                const double y = j + pattern[s].y;
+                Sample q{fb.index(run.first, j, s), run.first + pattern[s].x, y};
+                const std::size_t step = pattern.size();
+                if (!plane) {
+                    for (int i = run.first; i <= run.last; ++i, q.index += step, q.x += 1)
+                        zbuffer.offer(id, q, std::nullopt);
+                    return;
+                }
+                stats.depth_tests += offer_run(zbuffer, id, *plane, q, run.size(), step);
+            });
+        }
+        report_progress(progress, n + 1, order.size());
     }
 
     if (stats_out) *stats_out = stats;

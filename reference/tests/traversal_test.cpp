@@ -145,3 +145,39 @@ TEST(Multisample, HalfPixelRectanglesCountedFromTheSampleTables) {
 
 }  // namespace
 }  // namespace rast::reference
+
+namespace rast::reference {
+namespace {
+
+// The calls a Progress heard.
+struct Heard {
+    std::vector<std::pair<std::size_t, std::size_t>> calls;
+    Progress progress() {
+        return [this](std::size_t done, std::size_t total) { calls.emplace_back(done, total); };
+    }
+};
+
+// 600 triangles, half of them degenerate (they draw nothing but still count as done).
+Scene six_hundred_triangles() {
+    Scene s{Viewport{8, 8}, 1, {}};
+    for (int k = 0; k < 600; ++k)
+        s.triangles.push_back(k % 2 ? testing::flat(0, 0, 8, 0, 0, 8) : testing::flat(0, 0, 1, 1, 2, 2));
+    return s;
+}
+
+TEST(Progress, RenderReportsTheStartEveryStretchAndTheEnd) {
+    Heard heard;
+    render(six_hundred_triangles(), nullptr, heard.progress());
+    using Calls = decltype(heard.calls);
+    EXPECT_EQ(heard.calls, (Calls{{0, 600}, {256, 600}, {512, 600}, {600, 600}}));
+}
+
+TEST(Progress, CoverageAreaReportsTheStartEveryStretchAndTheEnd) {
+    Heard heard;
+    coverage_area(six_hundred_triangles(), heard.progress());
+    using Calls = decltype(heard.calls);
+    EXPECT_EQ(heard.calls, (Calls{{0, 600}, {256, 600}, {512, 600}, {600, 600}}));
+}
+
+}  // namespace
+}  // namespace rast::reference

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <rast/fast.h>
+#include <rast/progress.h>
 #include <rast/reference.h>
 #include <rast/scene.h>
 
@@ -43,8 +44,9 @@ struct Engine {
     std::optional<int> snap_bits() const;
 };
 
-// The exact reference; `stats`, when given, receives each render's exact-arithmetic counts.
-Engine reference_engine(reference::Stats* stats = nullptr);
+// The exact reference; `stats`, when given, receives each render's exact-arithmetic counts, and
+// `progress` hears how far each render has come.
+Engine reference_engine(reference::Stats* stats = nullptr, Progress progress = {});
 // The fast path in one precision on `threads` threads (0: all the process may use; the result is the
 // same for every count). It keeps a fast::Renderer, whose working memory lasts from render to render.
 Engine fast_engine(fast::Precision precision, int threads = 1);

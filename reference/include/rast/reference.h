@@ -6,6 +6,7 @@
 // (z, id) total order. Any finite double coordinate is valid.
 #pragma once
 
+#include <rast/progress.h>
 #include <rast/scene.h>
 
 #include <boost/multiprecision/gmp.hpp>
@@ -45,12 +46,13 @@ std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int sam
 Rational depth_at(const Triangle& t, double x, double y);
 
 // Rasterizes the scene with the z-buffer's (z, id) order. Depths in the result are the exact depths
-// rounded to the nearest double.
-Framebuffer render(const Scene& scene, Stats* stats = nullptr);
+// rounded to the nearest double. `progress` counts triangles drawn.
+Framebuffer render(const Scene& scene, Stats* stats = nullptr, const Progress& progress = {});
 
 // Exact area coverage (the box-prefiltered ideal): for every pixel, bottom row first, the area of the
-// pixel square covered by the scene's triangles, summed over triangles, depth ignored.
-std::vector<Rational> coverage_area(const Scene& scene);
+// pixel square covered by the scene's triangles, summed over triangles, depth ignored. `progress` counts
+// triangles.
+std::vector<Rational> coverage_area(const Scene& scene, const Progress& progress = {});
 
 // The exact area of the part of `t` inside pixel square (i, j).
 Rational pixel_area(const Triangle& t, int i, int j);
