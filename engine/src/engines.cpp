@@ -11,22 +11,21 @@ Framebuffer Engine::render(const Scene& scene) const {
     return fb;
 }
 
-bool Engine::exact() const { return !precision || snap_bits().has_value(); }
+namespace {
 
-std::optional<int> Engine::snap_bits() const {
-    if (!precision) return std::nullopt;
-    switch (*precision) {
-        case fast::Precision::fixed4: return 4;
-        case fast::Precision::fixed8: return 8;
-        case fast::Precision::fixed16: return 16;
-        case fast::Precision::float32:
-        case fast::Precision::float64: return std::nullopt;
-    }
-    return std::nullopt;
+// Every sample count, the tie rule and the (z, id) order; snapping to nearest, ties to even, if at all.
+Contract exact_contract(std::string name, std::optional<int> snap) {
+    Contract c;
+    c.name = std::move(name);
+    c.snap = snap;
+    return c;
 }
 
+}  // namespace
+
 Engine reference_engine(reference::Stats* stats, Progress progress) {
-    return {"reference", "reference (exact)", std::nullopt,
+    return {Engine::Kind::reference, "reference", "reference (exact)", std::nullopt,
+            exact_contract("reference", std::nullopt),
             [stats, progress](const Scene& s, Framebuffer& fb) { fb = reference::render(s, stats, progress); },
             [](const Triangle& t, Viewport vp, int n) { return reference::covered_samples(t, vp, n); },
             nullptr};
@@ -46,10 +45,19 @@ std::string describe_fast(fast::Precision p, int threads) {
 
 }  // namespace
 
+std::optional<Contract> fast_contract(fast::Precision p) {
+    const std::optional<int> bits = p == fast::Precision::fixed4    ? std::optional(4)
+                                    : p == fast::Precision::fixed8  ? std::optional(8)
+                                    : p == fast::Precision::fixed16 ? std::optional(16)
+                                                                    : std::nullopt;
+    if (!bits) return std::nullopt;
+    return exact_contract(std::string(fast::name(p)), bits);
+}
+
 Engine fast_engine(fast::Precision p, int threads) {
     auto renderer = std::make_shared<fast::Renderer>();
     const fast::Options options{p, threads};
-    return {std::string(fast::name(p)), describe_fast(p, threads), p,
+    return {Engine::Kind::fast, std::string(fast::name(p)), describe_fast(p, threads), p, fast_contract(p),
             [renderer, options](const Scene& s, Framebuffer& fb) { renderer->render(s, fb, options); },
             [p](const Triangle& t, Viewport vp, int n) { return fast::covered_samples(t, vp, n, p); },
             [p](const Triangle& t, double x, double y) { return fast::edge_error_bound_at(t, p, x, y); }};

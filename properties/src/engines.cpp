@@ -4,8 +4,8 @@
 namespace rast::properties {
 
 Triangle rasterized_geometry(const Engine& engine, const Triangle& t) {
-    const auto bits = engine.snap_bits();
-    return bits ? snap(t, *bits) : t;
+    const auto& contract = engine.contract;
+    return contract && contract->snap ? snap(t, *contract->snap, contract->rounding) : t;
 }
 
 Scene rasterized_geometry(const Engine& engine, const Scene& scene) {

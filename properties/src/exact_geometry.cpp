@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 namespace rast::properties {
@@ -73,18 +74,20 @@ Rational twice_area(const Triangle& t) {
     return doubled < 0 ? Rational(-doubled) : doubled;
 }
 
-double snap(double value, int bits) {
+double snap(double value, int bits, Contract::Rounding rounding) {
+    if (rounding == Contract::Rounding::any) throw std::invalid_argument("snap: rounding=any is not one snapping");
     // A double of magnitude 2^(52 - bits) or more is already a multiple of 2^-bits, and scaling it could
     // overflow. Below that, scaling by a power of two is exact and nearbyint rounds ties to even.
     if (!(std::abs(value) < std::ldexp(1.0, 52 - bits))) return value;
-    return std::ldexp(std::nearbyint(std::ldexp(value, bits)), -bits);
+    const double scaled = std::ldexp(value, bits);
+    return std::ldexp(rounding == Contract::Rounding::floor ? std::floor(scaled) : std::nearbyint(scaled), -bits);
 }
 
-Triangle snap(const Triangle& t, int bits) {
+Triangle snap(const Triangle& t, int bits, Contract::Rounding rounding) {
     Triangle s = t;
     for (Vertex& v : s.v) {
-        v.x = snap(v.x, bits);
-        v.y = snap(v.y, bits);
+        v.x = snap(v.x, bits, rounding);
+        v.y = snap(v.y, bits, rounding);
     }
     return s;
 }

@@ -1,4 +1,5 @@
 #include <stdexcept>
+#include <string>
 
 #include "checks.h"
 
@@ -6,10 +7,14 @@ namespace rast::properties {
 
 namespace {
 
-bool every_engine(const Engine&) { return true; }
+// A plugin's contract may promise less than rast's own engines keep: no tie rule (so no promise on an
+// edge, whichever way a triangle winds), no (z, id) order, or a snapping chosen per vertex (so no one
+// geometry whose exact depths decide the order).
+bool keeps_ties(const Engine& e) { return !e.contract || e.contract->top_left; }
+bool keeps_zid(const Engine& e) { return !e.contract || (e.contract->zid && e.contract->deterministic()); }
 bool exact_engines(const Engine& e) { return e.exact(); }
-bool fixed_engines(const Engine& e) { return e.snap_bits().has_value(); }
-bool float_engines(const Engine& e) { return !e.exact(); }
+bool fixed_engines(const Engine& e) { return e.exact() && e.snap_bits().has_value(); }
+bool float_engines(const Engine& e) { return e.edge_error_bound_at && !e.exact(); }
 
 // Float modes are bound only by float_within_bound: near an edge they may classify either way, so
 // exact coverage claims (shared edges, ties, translations) are not theirs to keep.
@@ -17,10 +22,10 @@ constexpr Property kProperties[] = {
     {"watertight", "in a triangulated region every inner sample is covered exactly once, none outside",
      exact_engines, watertight},
     {"tie_rule", "samples on edges and vertices are owned by left and top edges only", exact_engines, tie_rule},
-    {"winding_invariance", "every vertex order covers the same samples", every_engine, winding_invariance},
+    {"winding_invariance", "every vertex order covers the same samples", keeps_ties, winding_invariance},
     {"translation_invariance", "a whole-pixel shift of the scene shifts its image", exact_engines,
      translation_invariance},
-    {"order_independence", "every draw order gives the (z, id) minimum", every_engine, order_independence},
+    {"order_independence", "every draw order gives the (z, id) minimum", keeps_zid, order_independence},
     {"fixed_matches_reference", "fixed N equals the reference on vertices snapped to N bits", fixed_engines,
      fixed_matches_reference},
     {"float_within_bound", "float modes differ from the reference only within their error bound of an edge",
@@ -33,8 +38,13 @@ constexpr Property kProperties[] = {
 }  // namespace
 
 Outcome Property::verdict_on(const Scene& scene, const Engine& engine) const {
+    if (engine.contract && !engine.contract->renders(scene.samples))
+        return Outcome::not_applicable("the engine does not render " + std::to_string(scene.samples) +
+                                       " samples a pixel");
     try {
         return check(scene, engine);
+    } catch (const EngineError&) {
+        throw;
     } catch (const std::exception& e) {
         return Outcome::fail(engine.name + " threw: " + e.what());
     }

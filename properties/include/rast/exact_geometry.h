@@ -3,6 +3,7 @@
 // docs/design.md, areas, and the fixed-point snapping of fast.h.
 #pragma once
 
+#include <rast/contract.h>
 #include <rast/scene.h>
 
 #include <boost/multiprecision/gmp.hpp>
@@ -36,7 +37,9 @@ bool rule_covers(const Triangle& t, double x, double y);
 Rational twice_area(const Triangle& t);
 
 // fast.h's fixed-point input: x and y rounded to the nearest multiple of 2^-bits, ties to even; z kept.
-double snap(double value, int bits);
-Triangle snap(const Triangle& t, int bits);
+// With Rounding::floor, rounded down instead (a plugin's contract may say so); Rounding::any is not one
+// snapping, and throws std::invalid_argument.
+double snap(double value, int bits, Contract::Rounding rounding = Contract::Rounding::nearest_even);
+Triangle snap(const Triangle& t, int bits, Contract::Rounding rounding = Contract::Rounding::nearest_even);
 
 }  // namespace rast::properties

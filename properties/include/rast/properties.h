@@ -27,7 +27,8 @@ namespace rast::properties {
 using rast::Engine;
 
 // The geometry whose samples `engine` must classify exactly: the scene itself, or its vertices snapped to
-// the engine's grid by the oracle's own snap (exact_geometry.h), not the fast path's.
+// the engine's grid as its contract rounds, by the oracle's own snap (exact_geometry.h), not the fast
+// path's. Throws std::invalid_argument for a contract with rounding=any, which has no one geometry.
 Scene rasterized_geometry(const Engine& engine, const Scene& scene);
 Triangle rasterized_geometry(const Engine& engine, const Triangle& t);
 
