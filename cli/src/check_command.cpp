@@ -187,7 +187,7 @@ bool cut_by_near_plane(const Scene& scene) {
 
 std::string command_line(const CheckOptions& o) {
     std::string text = "rast check " + shell_word(o.input.path) + o.input.options() + " --engine " + o.engine.engine;
-    if (!o.engine.is_reference()) text += " --precision " + o.engine.precision;
+    if (o.engine.engine == "fast") text += " --precision " + o.engine.precision;
     return text;
 }
 

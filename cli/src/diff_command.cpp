@@ -96,13 +96,15 @@ void add_diff_command(CLI::App& app) {
     auto o = std::make_shared<DiffOptions>();
     CLI::App* cmd = app.add_subcommand(
         "diff",
-        "Render a scene with the exact reference and with the fast path, count the samples and pixels where\n"
-        "their id buffers disagree, and optionally draw both side by side with a third panel marking the\n"
+        "Render a scene with the exact reference and with another engine (the fast path, or a plugin), count\n"
+        "the samples and pixels where their id buffers disagree, and optionally draw both side by side with a third panel marking the\n"
         "disagreeing pixels in magenta (small viewports magnified). A difference is information about a\n"
         "precision mode, not an error: the exit status is 0 whatever the count.");
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
-    cmd->remove_option(cmd->get_option("--engine"));  // one side is always the reference, the other the fast path
+    // One side is always the reference.
+    cmd->get_option("--engine")->check(
+        [](const std::string& s) { return s == "reference" ? "diff compares the reference with another engine" : ""; });
     CLI::Option* image =
         cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG")->check(png_name);
     cmd->add_option("--magnify", o->magnify,

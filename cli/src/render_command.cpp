@@ -23,6 +23,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,6 +95,9 @@ std::string format_area(Viewport vp, const std::vector<reference::Rational>& are
 }
 
 void run_render(const RenderOptions& o) {
+    if (o.engine.plugin() && (o.depth_out || (o.image_out && o.coverage == "depth")))
+        throw std::invalid_argument(std::string(o.depth_out ? "--depth-out" : "--coverage depth") +
+                                    ": a plugin returns ids only, no depths");
     std::vector<std::filesystem::path> inputs;
     if (!o.use_default) inputs.push_back(o.input.path);
     check_output_paths(inputs, {{"-o", o.image_out}, {"--ids-out", o.ids_out}, {"--depth-out", o.depth_out},

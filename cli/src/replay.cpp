@@ -156,12 +156,12 @@ std::vector<CorpusEntry> corpus_files(std::span<const fs::path> paths) {
     return entries;
 }
 
-CaseReport replay_entry(const CorpusEntry& entry, std::span<const Engine> engines) {
+CaseReport replay_entry(const CorpusEntry& entry, std::span<const Engine> engines, EngineScope scope) {
     if (entry.unlisted) return error_report(entry.path, {0, "cannot list the folder: " + *entry.unlisted});
-    return replay_case(entry.path, engines);
+    return replay_case(entry.path, engines, scope);
 }
 
-CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
+CaseReport replay_case(const fs::path& file, std::span<const Engine> engines, EngineScope scope) {
     std::string text;
     TriDocument doc;
     std::vector<const Property*> selected;
@@ -181,6 +181,11 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines) {
     properties::CaseCheck result = properties::check_case(doc.scene, selected, engines);
     std::vector<Failure>& failures = result.failures;
     if (!failures.empty()) return {CaseReport::Status::fail, fail_line(file, failures), std::move(failures)};
+    if (scope == EngineScope::chosen && result.checks == 0)
+        return {CaseReport::Status::skip,
+                "SKIP " + file.string() + ": " +
+                    (result.unchecked.empty() ? "no named property applies to the engine" : result.unchecked),
+                {}};
     // A property named in the header holds for the case by construction (corpus/README.md): one that no
     // engine can check here claims what the case does not test.
     if (!result.unchecked.empty())

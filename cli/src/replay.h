@@ -27,22 +27,29 @@ struct CorpusEntry {
 std::vector<CorpusEntry> corpus_files(std::span<const std::filesystem::path> paths);
 
 struct CaseReport {
-    enum class Status { pass, fail, error };
+    enum class Status { pass, fail, error, skip };
     Status status = Status::pass;
     // The one line printed for the case:
     //   PASS path (P properties x E engines: C checks, N not applicable)
     //   FAIL path property [engine]: what differs, at which sample (and K more failures)
     //   ERROR path:line: what is wrong with the file
+    //   SKIP path: why nothing applies to the one engine chosen
     std::string line;
     std::vector<properties::Failure> failures;  // in property then engine order
 };
 
+// Which engines replay runs: rast's own (every case must check something on them), or one the user chose,
+// which may promise less than a case needs (a plugin with fewer sample counts or a weaker contract).
+enum class EngineScope { built_in, chosen };
+
 // Reads the case, runs each property of its "# properties:" header on each engine it applies to. A file
-// that cannot be read, is malformed, names no property, an unknown one or one twice, or whose properties
-// apply to none of the engines (it would check nothing) is an error.
-CaseReport replay_case(const std::filesystem::path& file, std::span<const Engine> engines);
+// that cannot be read, is malformed, names no property, an unknown one or one twice is an error; so is one
+// whose properties check nothing on the built-in engines. On a chosen engine, that case is skipped.
+CaseReport replay_case(const std::filesystem::path& file, std::span<const Engine> engines,
+                       EngineScope scope = EngineScope::built_in);
 
 // replay_case for a file; for a folder that could not be listed, an error that says why.
-CaseReport replay_entry(const CorpusEntry& entry, std::span<const Engine> engines);
+CaseReport replay_entry(const CorpusEntry& entry, std::span<const Engine> engines,
+                        EngineScope scope = EngineScope::built_in);
 
 }  // namespace rast::cli

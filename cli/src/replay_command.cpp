@@ -1,5 +1,6 @@
 // rast replay: every corpus case, every property its header names, every engine; one line per case.
 #include "commands.h"
+#include "engine_choice.h"
 #include "replay.h"
 
 #include <CLI/CLI.hpp>
@@ -9,21 +10,27 @@
 #include <memory>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 namespace rast::cli {
 
 void add_replay_command(CLI::App& app, int& status) {
     auto paths = std::make_shared<std::vector<std::filesystem::path>>();
+    auto choice = std::make_shared<EngineChoice>();
     CLI::App* cmd = app.add_subcommand(
         "replay",
         "Replay corpus cases (.tri files, or folders of them; default: corpus/). Each case's '# properties:'\n"
         "header names the properties that apply; each runs on the reference and on every fast precision it\n"
-        "applies to. One line per case: PASS, FAIL with the property, engine and first differing sample, or\n"
-        "ERROR path:line for a malformed file (the other cases still run). Then 'N passed, M failed' (errors\n"
-        "count as failed). Exit status 0 when every case passed, 1 when a case failed, 2 when a case could not be\n"
-        "read or is malformed. Files are only read.");
+        "applies to, or on the one engine --engine names (a plugin, say). One line per case: PASS, FAIL with\n"
+        "the property, engine and first differing sample, or ERROR path:line for a malformed file (the other\n"
+        "cases still run), or SKIP where nothing applies to the chosen engine. Then 'N passed, M failed'\n"
+        "(errors count as failed). Exit status 0 when every case passed, 1 when a case failed, 2 when a case\n"
+        "could not be read or is malformed, or the engine failed. Files are only read.");
     cmd->add_option("PATH", *paths, "Case files or folders")->default_str("corpus");
-    cmd->callback([paths, &status] {
+    add_engine_options(*cmd, *choice);
+    CLI::Option* engine = cmd->get_option("--engine");
+    engine->default_str("every built-in engine");
+    cmd->callback([paths, choice, engine, &status] {
         if (paths->empty()) {
             std::error_code unseen;
             if (!std::filesystem::exists("corpus", unseen))
@@ -31,18 +38,24 @@ void add_replay_command(CLI::App& app, int& status) {
                                          "folders (rast replay PATH...), or run it where corpus/ is");
             paths->push_back("corpus");
         }
-        const auto engines = all_engines();
+        const bool chosen = engine->count() > 0;
+        const auto engines = chosen ? std::vector<Engine>{choice->make()} : all_engines();
         const auto files = corpus_files(*paths);
         if (files.empty()) throw std::runtime_error("no .tri case found: nothing to replay");
-        std::size_t passed = 0, failed = 0;
+        std::size_t passed = 0, failed = 0, skipped = 0;
         bool unusable = false;  // a case that is malformed or cannot be read: bad input, not a verdict
         for (const auto& entry : files) {
-            const CaseReport report = replay_entry(entry, engines);
+            const CaseReport report =
+                replay_entry(entry, engines, chosen ? EngineScope::chosen : EngineScope::built_in);
             std::cout << report.line << std::endl;
-            (report.status == CaseReport::Status::pass ? passed : failed) += 1;
+            (report.status == CaseReport::Status::pass   ? passed
+             : report.status == CaseReport::Status::skip ? skipped
+                                                         : failed) += 1;
             unusable = unusable || report.status == CaseReport::Status::error;
         }
-        std::cout << passed << " passed, " << failed << " failed\n";
+        std::cout << passed << " passed, " << failed << " failed";
+        if (skipped > 0) std::cout << ", " << skipped << " skipped (nothing in them applies to the engine)";
+        std::cout << '\n';
         status = unusable ? 2 : failed > 0 ? 1 : 0;
     });
 }

@@ -1,0 +1,98 @@
+// Any rasterizer through the plugin ABI, from the command line: --engine plugin:PATH wherever an engine is
+// chosen, and a plugin that fails ends the command with exit status 2 and its reason, writing nothing.
+#include "cli_harness.h"
+
+#include <string>
+
+namespace rast::cli::testing {
+namespace {
+
+const std::string kFixed8 = RAST_PLUGINS "/rast-plugin-fixed8.so";
+const std::string kNaive = RAST_PLUGINS "/rast-plugin-naive.so";
+std::string misbehaving(const std::string& way) { return RAST_TEST_PLUGINS "/misbehaving-" + way + ".so"; }
+
+// Two triangles sharing the diagonal of a 2x2 square, which passes through the centres (0.5, 0.5) and
+// (1.5, 1.5). Counter-clockwise, the diagonal is triangle 0's edge (2,2)->(0,0), a left edge (dy < 0), and
+// triangle 1's edge (0,0)->(2,2), a right one: the tie rule gives both centres to triangle 0.
+const std::string kSplitSquare =
+    "viewport 2 2\n"
+    "tri 0 0 0.5  2 0 0.5  2 2 0.5\n"
+    "tri 0 0 0.5  2 2 0.5  0 2 0.5\n";
+
+class PluginCommands : public TempDirTest {};
+
+TEST_F(PluginCommands, RenderWithAPluginWritesWhatTheFastPathWrites) {
+    const Result plugin = rast("render --default --engine plugin:" + kFixed8 + " --ids-out " + out("plugin.txt"));
+    ASSERT_EQ(plugin.status, 0) << plugin.out;
+    EXPECT_TRUE(contains(plugin.out, "engine:  plugin fixed8 (" + kFixed8 + ")")) << plugin.out;
+    ASSERT_EQ(rast("render --default --engine fast --ids-out " + out("fast.txt")).status, 0);
+    EXPECT_EQ(read("plugin.txt"), read("fast.txt"));
+}
+
+TEST_F(PluginCommands, APluginThatCrashesEndsTheCommandWithItsReasonAndWritesNothing) {
+    const Result r = rast("render --default --engine plugin:" + misbehaving("crash") + " -o " + out("picture.png") +
+                          " --ids-out " + out("ids.txt"));
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_TRUE(contains(r.out, "rast: error: plugin " + misbehaving("crash") +
+                                    ": crashed (signal 11, Segmentation fault) rendering a scene of 17 triangles"))
+        << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "picture.png"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "ids.txt"));
+}
+
+TEST_F(PluginCommands, AHangingPluginIsStoppedAtTheTimeoutGiven) {
+    const Result r = rast("render --default --engine plugin:" + misbehaving("hang") + " --plugin-timeout 0.2");
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_TRUE(contains(r.out, ": no answer within 0.2 s rendering a scene of 17 triangles")) << r.out;
+}
+
+TEST_F(PluginCommands, EngineOptionsAreRefusedWhereTheyDoNotApply) {
+    const Result timeout = rast("render --default --engine fast --plugin-timeout 5");
+    EXPECT_EQ(timeout.status, 2);
+    EXPECT_TRUE(contains(timeout.out, "applies to --engine plugin:PATH only")) << timeout.out;
+    const Result empty = rast("render --default --engine plugin:");
+    EXPECT_EQ(empty.status, 2);
+    EXPECT_TRUE(contains(empty.out, "plugin: needs the library's path")) << empty.out;
+    const Result unknown = rast("render --default --engine gpu");
+    EXPECT_EQ(unknown.status, 2);
+    EXPECT_TRUE(contains(unknown.out, "unknown engine 'gpu' (expected reference, fast or plugin:PATH)")) << unknown.out;
+    const Result depth = rast("render --default --engine plugin:" + kFixed8 + " --depth-out " + out("depth.txt"));
+    EXPECT_EQ(depth.status, 2);
+    EXPECT_TRUE(contains(depth.out, "--depth-out: a plugin returns ids only, no depths")) << depth.out;
+    const Result diff = rast("diff " + file("s.tri", kSplitSquare) + " --engine reference");
+    EXPECT_EQ(diff.status, 2);
+    EXPECT_TRUE(contains(diff.out, "diff compares the reference with another engine")) << diff.out;
+}
+
+TEST_F(PluginCommands, ReplayHoldsAPluginToTheCasesProperties) {
+    const std::string scene = file("split-square.tri", "# properties: watertight tie_rule\n" + kSplitSquare);
+    const Result naive = rast("replay --engine plugin:" + kNaive + " " + scene);
+    EXPECT_EQ(naive.status, 1) << naive.out;
+    // The diagonal passes through the centres of pixels (0, 0) and (1, 1): ">= 0" covers them twice.
+    EXPECT_TRUE(contains(naive.out, "FAIL " + scene + " watertight [naive]: pixel (0, 0) sample 0 at (0.5, 0.5): "
+                                                      "naive covers it twice, by triangle 0 and triangle 1"))
+        << naive.out;
+    const Result fixed8 = rast("replay --engine plugin:" + kFixed8 + " " + scene);
+    EXPECT_EQ(fixed8.status, 0) << fixed8.out;
+    EXPECT_TRUE(contains(fixed8.out, "PASS " + scene + " (2 properties x 1 engines: 2 checks")) << fixed8.out;
+}
+
+TEST_F(PluginCommands, ReplaySkipsACaseThePluginCannotRender) {
+    const std::string scene = file("x4.tri", "# properties: watertight\nsamples 4\n" + kSplitSquare);
+    const Result r = rast("replay --engine plugin:" + kNaive + " " + scene);
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "SKIP " + scene + ": watertight [naive]: the engine does not render 4 samples a pixel"))
+        << r.out;
+    EXPECT_TRUE(contains(r.out, "0 passed, 0 failed, 1 skipped")) << r.out;
+}
+
+TEST_F(PluginCommands, DiffComparesAPluginWithTheReference) {
+    const Result r = rast("diff " + file("s.tri", kSplitSquare) + " --engine plugin:" + kNaive);
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "compare: reference (exact) vs plugin naive (" + kNaive + ")")) << r.out;
+    // ">= 0" lets both triangles cover the diagonal's two centres, and "<=" gives them to the later one.
+    EXPECT_TRUE(contains(r.out, "differing samples: 2 of 4")) << r.out;
+}
+
+}  // namespace
+}  // namespace rast::cli::testing

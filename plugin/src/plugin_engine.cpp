@@ -1,0 +1,68 @@
+#include <rast/plugin_engine.h>
+
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include "plugin_process.h"
+
+namespace rast {
+
+namespace {
+
+// The most samples a plugin's framebuffer may hold: 1 GiB of ids through the socket.
+constexpr std::size_t kMaxSamples = std::size_t{1} << 28;
+
+std::string where(const Framebuffer& fb, std::size_t index) {
+    const auto n = static_cast<std::size_t>(fb.samples), w = static_cast<std::size_t>(fb.viewport.width);
+    return "pixel (" + std::to_string(index / n % w) + ", " + std::to_string(index / n / w) + ") sample " +
+           std::to_string(index % n);
+}
+
+}  // namespace
+
+Engine plugin_engine(const std::string& library, const PluginOptions& options) {
+    auto process = std::make_shared<plugin_host::PluginProcess>(library, options.timeout);
+    Contract contract;
+    try {
+        contract = Contract::parse(process->contract_text());
+    } catch (const std::invalid_argument& e) {
+        throw EngineError("plugin " + library + ": rast_plugin_contract() \"" + process->contract_text() +
+                          "\": " + e.what());
+    }
+    const auto draw = [process, contract, library](const Scene& scene, Framebuffer& fb) {
+        if (!contract.renders(scene.samples))
+            throw EngineError("plugin " + library + " (" + contract.name + ") does not render " +
+                              std::to_string(scene.samples) + " samples a pixel (its contract: " +
+                              contract.text() + ")");
+        const std::size_t samples = static_cast<std::size_t>(scene.viewport.width) *
+                                    static_cast<std::size_t>(scene.viewport.height) *
+                                    static_cast<std::size_t>(scene.samples);
+        if (samples > kMaxSamples)
+            throw EngineError("plugin " + library + ": a framebuffer of " + std::to_string(samples) +
+                              " samples is more than a plugin is sent (2^28)");
+        fb.viewport = scene.viewport;
+        fb.samples = scene.samples;
+        fb.ids = process->render(scene);
+        // The ABI returns ids alone.
+        fb.depth.assign(fb.ids.size(), std::numeric_limits<double>::quiet_NaN());
+        const auto count = static_cast<std::int64_t>(scene.triangles.size());
+        for (std::size_t k = 0; k < fb.ids.size(); ++k)
+            if (fb.ids[k] < -1 || fb.ids[k] >= count)
+                throw EngineError("plugin " + library + " wrote id " + std::to_string(fb.ids[k]) + " at " +
+                                  where(fb, k) + " of a scene of " + std::to_string(count) +
+                                  " triangles (ids are -1..triangles-1)");
+    };
+    const auto covered = [draw](const Triangle& t, Viewport vp, int samples) {
+        Framebuffer fb;
+        draw(Scene{vp, samples, {t}}, fb);
+        std::vector<std::size_t> indices;
+        for (std::size_t k = 0; k < fb.ids.size(); ++k)
+            if (fb.ids[k] == 0) indices.push_back(k);
+        return indices;
+    };
+    return {Engine::Kind::plugin, contract.name, "plugin " + contract.name + " (" + library + ")", std::nullopt,
+            contract, draw, covered, nullptr};
+}
+
+}  // namespace rast
