@@ -20,6 +20,7 @@ Outcome fixed_matches_reference(const Scene& scene, const Engine& engine);
 Outcome float_within_bound(const Scene& scene, const Engine& engine);
 Outcome msaa_counts(const Scene& scene, const Engine& engine);
 Outcome area_tiling(const Scene& scene, const Engine& engine);
+Outcome conforms(const Scene& scene, const Engine& engine);
 
 // Not applicable, naming the first triangle that snapping to the engine's grid turns over (or gives area
 // it did not have), where `geometry` (rasterized_geometry) has one: the snapped scene is then no longer

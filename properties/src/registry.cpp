@@ -13,6 +13,7 @@ namespace {
 bool keeps_ties(const Engine& e) { return !e.contract || e.contract->top_left; }
 bool keeps_zid(const Engine& e) { return !e.contract || (e.contract->zid && e.contract->deterministic()); }
 bool exact_engines(const Engine& e) { return e.exact(); }
+bool contract_engines(const Engine& e) { return e.contract.has_value(); }
 bool fixed_engines(const Engine& e) { return e.exact() && e.snap_bits().has_value(); }
 bool float_engines(const Engine& e) { return e.edge_error_bound_at && !e.exact(); }
 
@@ -33,6 +34,8 @@ constexpr Property kProperties[] = {
     {"msaa_counts", "per-pixel covered-sample counts equal the exact rule's", exact_engines, msaa_counts},
     {"area_tiling", "exact pixel areas of a tiling sum exactly and decide full and empty pixels", exact_engines,
      area_tiling},
+    {"conforms", "every sample is as the engine's contract demands: required ones covered, forbidden ones not, "
+     "ids in the (z, id) order", contract_engines, conforms},
 };
 
 }  // namespace

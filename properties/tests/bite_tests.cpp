@@ -168,6 +168,9 @@ const Bite kBites[] = {
      "translation_invariance"},
     {"throws_on_overlap_order_independence", Fault::none, Wrapper::throws_on_overlap, Precision::fixed8,
      "order_independence"},
+    {"depth_less_equal_conforms", Fault::depth_less_equal, Wrapper::none, Precision::fixed8, "conforms"},
+    {"bbox_one_short_conforms", Fault::bbox_one_short, Wrapper::none, Precision::fixed16, "conforms"},
+    {"snap_by_truncation_conforms", Fault::none, Wrapper::snap_by_truncation, Precision::fixed8, "conforms"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Faults, Bites, ::testing::ValuesIn(kBites),
