@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     rast::cli::add_replay_command(app, status);
     rast::cli::add_check_command(app, status);
     rast::cli::add_diff_command(app);
+    rast::cli::add_conform_command(app, status);
 #ifdef RAST_WITH_BENCH
     rast::cli::add_bench_command(app);
 #endif

@@ -94,5 +94,57 @@ TEST_F(PluginCommands, DiffComparesAPluginWithTheReference) {
     EXPECT_TRUE(contains(r.out, "differing samples: 2 of 4")) << r.out;
 }
 
+TEST_F(PluginCommands, ConformCatchesTheTutorialRasterizerAndKeepsReplayableCases) {
+    const std::string found = out("found");
+    const Result r = rast("conform " + kNaive + " --corpus " + RAST_CORPUS + "/tie-rule --cases 20 --found " + found +
+                          " --json " + out("verdict.json") + " --markdown " + out("verdict.md"));
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "contract: name=naive samples=1 snap=none ties=top-left depth=zid")) << r.out;
+    // The shared diagonals of the tie-rule corpus are covered twice by ">= 0".
+    EXPECT_TRUE(contains(r.out, "FAIL watertight: ")) << r.out;
+    EXPECT_TRUE(contains(r.out, "FAIL conforms: ")) << r.out;
+    EXPECT_TRUE(contains(r.out, "FAIL tie_rule: ")) << r.out;
+    EXPECT_TRUE(contains(r.out, " failed\n")) << r.out;
+    EXPECT_TRUE(contains(read("verdict.json"), "\"conforms\": false")) << read("verdict.json");
+    EXPECT_TRUE(contains(read("verdict.md"), "| watertight | FAIL |")) << read("verdict.md");
+    // Every kept case replays as a failure on the plugin, and has its picture.
+    std::size_t kept = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(found)) {
+        if (entry.path().extension() != ".tri") continue;
+        ++kept;
+        EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(entry.path()).replace_extension(".png")));
+        const Result replayed = rast("replay --engine plugin:" + kNaive + " " + entry.path().string());
+        EXPECT_EQ(replayed.status, 1) << replayed.out;
+    }
+    EXPECT_GE(kept, 3u);
+}
+
+TEST_F(PluginCommands, ConformPassesTheFixedPathOnTheScenesGiven) {
+    const std::string scene = file("split-square.tri", "# properties: watertight\n" + kSplitSquare);
+    const Result r = rast("conform " + kFixed8 + " " + scene + " --found " + out("found"));
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "judged:   1 scene given\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "PASS watertight (1 scenes)\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "PASS conforms (1 scenes)\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "9 passed, 0 failed\n")) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "found"));
+}
+
+TEST_F(PluginCommands, ConformKeepsTheSceneAPluginCrashedOn) {
+    const std::string scene = file("split-square.tri", kSplitSquare);
+    const Result r = rast("conform " + misbehaving("crash") + " " + scene + " --found " + out("found"));
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_TRUE(contains(r.out, "crashed (signal 11, Segmentation fault) rendering a scene of 2 triangles")) << r.out;
+    EXPECT_TRUE(contains(r.out, "; the scene is kept in " + out("found") + "/misbehaving-engine-error-")) << r.out;
+}
+
+TEST_F(PluginCommands, ConformRefusesABadShard) {
+    for (const char* shard : {"0/4", "5/4", "2", "1/0", "a/b"}) {
+        const Result r = rast("conform " + kFixed8 + " --shard " + shard);
+        EXPECT_EQ(r.status, 2) << shard << ": " << r.out;
+        EXPECT_TRUE(contains(r.out, "expected K/N with 1 <= K <= N")) << r.out;
+    }
+}
+
 }  // namespace
 }  // namespace rast::cli::testing

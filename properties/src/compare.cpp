@@ -1,4 +1,5 @@
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "checks.h"
@@ -24,8 +25,10 @@ std::optional<std::string> first_difference(const std::vector<std::size_t>& a, c
 }
 
 namespace {
+// A plugin returns no depths (NaN): its fragment is its id.
 std::string fragment(const Framebuffer& f, std::size_t k) {
-    return "id " + std::to_string(f.ids[k]) + " depth " + shortest(f.depth[k]);
+    const std::string id = "id " + std::to_string(f.ids[k]);
+    return std::isnan(f.depth[k]) ? id : id + " depth " + shortest(f.depth[k]);
 }
 }  // namespace
 

@@ -112,7 +112,7 @@ TEST_P(Bites, PropertyFailsAndKeepsItsCounterexample) {
     params.seed = 20261121;  // fixed: the test is about this search, not a lucky one
     params.maxSuccess = 300;
     const auto result = rc::detail::checkTestable(
-        [&] { rast::harness::hold(b.property, *rast::harness::scenes_for(b.property), engine); }, metadata, params);
+        [&] { rast::harness::hold(b.property, *rast::gen::scenes_for(b.property), engine); }, metadata, params);
     ASSERT_TRUE(result.is<rc::detail::FailureResult>()) << b.property << " did not detect " << b.name;
 
     // The minimal counterexample was kept where RAST_CORPUS_OUT says, naming the property it breaks.

@@ -11,24 +11,6 @@
 
 namespace rast::harness {
 
-rc::Gen<Scene> scenes_for(std::string_view property) {
-    if (property == "watertight" || property == "area_tiling")
-        return rc::gen::oneOf(gen::triangulated_region(),
-                              rc::gen::exec([] { return *gen::triangulated_region_on_grid(*rc::gen::element(4, 8, 16)); }));
-    if (property == "order_independence")
-        return rc::gen::weightedOneOf<Scene>({{3, gen::overlapping_triangles()}, {1, gen::any_scene()}});
-    if (property == "conforms")
-        return rc::gen::oneOf(gen::any_scene(), gen::overlapping_triangles(), gen::triangulated_region());
-    if (property == "float_within_bound") return rc::gen::oneOf(gen::any_scene(), gen::long_rows());
-    if (property == "msaa_counts")
-        return rc::gen::map(rc::gen::pair(gen::any_scene(), rc::gen::element(4, 8, 16)), [](std::pair<Scene, int> p) {
-            p.first.samples = p.second;
-            return p.first;
-        });
-    properties::property(property);  // throws for a name that is not a property
-    return gen::any_scene();
-}
-
 void hold(std::string_view name, const Scene& scene, std::span<const Engine> engines) {
     const properties::Property& p = properties::property(name);
     bool checked = false;

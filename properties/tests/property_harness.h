@@ -14,9 +14,6 @@
 
 namespace rast::harness {
 
-// The scenes that reach the hard cases of one property (rast/property_generators.h).
-rc::Gen<Scene> scenes_for(std::string_view property);
-
 // Inside a RapidCheck case: checks the property on every engine it applies to. On a failure, keeps the
 // scene (keep_counterexample) and fails the case with the property's description; when the property
 // applies to none of the engines for this scene, discards the case.

@@ -9,7 +9,7 @@
 namespace {
 
 using rast::harness::hold;
-using rast::harness::scenes_for;
+using rast::gen::scenes_for;
 
 const std::vector<rast::Engine>& engines() {
     static const auto all = rast::all_engines();

@@ -13,6 +13,7 @@
 #include <rapidcheck.h>
 
 #include <ostream>
+#include <string_view>
 #include <vector>
 
 namespace rast {
@@ -60,6 +61,10 @@ rc::Gen<Scene> overlapping_triangles();
 
 // One of all of the above.
 rc::Gen<Scene> any_scene();
+
+// The scenes that reach the hard cases of one property (rast/properties.h names them); throws
+// std::invalid_argument for a name that is not a property.
+rc::Gen<Scene> scenes_for(std::string_view property);
 
 // Parts the generators above are built from, for the triangulation sources in their own files.
 namespace detail {

@@ -1,0 +1,52 @@
+#include "kept_case.h"
+
+#include <rast/tri_format.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <sstream>
+
+namespace rast::conform::detail {
+
+namespace {
+
+// FNV-1a, 64 bits: a name that depends on the scene alone, the same on every machine.
+std::uint64_t fnv1a(const std::string& text) {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const char c : text) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+
+// A header value is one line without surrounding blanks.
+std::string one_line(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    std::replace(text.begin(), text.end(), '\r', ' ');
+    const auto first = text.find_first_not_of(" \t");
+    const auto last = text.find_last_not_of(" \t");
+    return first == std::string::npos ? "-" : text.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+std::filesystem::path keep_case(const std::filesystem::path& folder, const Scene& scene, const KeptCase& what) {
+    std::ostringstream body;
+    write_tri(body, scene, {});
+    char digits[17];
+    std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(fnv1a(body.str())));
+    const auto path = folder / (what.engine + "-" + what.property + "-" + digits + ".tri");
+    TriHeader header;
+    if (what.property != "engine-error") header.push_back({"properties", what.property});
+    header.push_back({"why", one_line("rast conform [" + what.engine + "]: " + what.why)});
+    header.push_back({"found-by", "rast conform"});
+    if (!what.contract.empty()) header.push_back({"contract", what.contract});
+    header.push_back({"reproduce", "rast replay --engine " + what.engine_option + " " + path.string()});
+    std::filesystem::create_directories(folder);
+    write_tri_file(path, scene, header);
+    return path;
+}
+
+}  // namespace rast::conform::detail

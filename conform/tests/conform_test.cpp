@@ -1,0 +1,111 @@
+// rast conform's machinery on engines that keep their contracts and on one that does not: no false
+// alarm on the fast path's plugins, and each of the tutorial rasterizer's faults caught on a small scene.
+#include <rast/conform.h>
+#include <rast/plugin_engine.h>
+#include <rast/tri_format.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+namespace rast::conform {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<Case> corpus() {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::recursive_directory_iterator(RAST_CORPUS_DIR))
+        if (entry.path().extension() == ".tri" && entry.path().string().find("/found/") == std::string::npos)
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    std::vector<Case> cases;
+    for (const auto& f : files) cases.push_back(read_case(f));
+    return cases;
+}
+
+class Conform : public ::testing::Test {
+protected:
+    void SetUp() override {
+        found = fs::temp_directory_path() /
+                ("rast_conform_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(found);
+    }
+    void TearDown() override { fs::remove_all(found); }
+    fs::path found;
+};
+
+TEST(DropTriangles, KeepsOnlyWhatTheFailureNeeds) {
+    Scene s{{4, 4}, 1, {}};
+    for (int k = 0; k < 6; ++k) s.triangles.push_back(Triangle{{Vertex{double(k), 0, 0}, Vertex{1, 0, 0}, Vertex{0, 1, 0}}});
+    // Fails while triangles 1 and 4 are both there.
+    const auto fails = [](const Scene& scene) {
+        int seen = 0;
+        for (const Triangle& t : scene.triangles) seen += t.v[0].x == 1 || t.v[0].x == 4;
+        return seen == 2;
+    };
+    const Scene shrunk = drop_triangles(s, fails);
+    ASSERT_EQ(shrunk.triangles.size(), 2u);
+    EXPECT_EQ(shrunk.triangles[0].v[0].x, 1);
+    EXPECT_EQ(shrunk.triangles[1].v[0].x, 4);
+}
+
+TEST(CaseSeed, DiffersForEveryShardAndProperty) {
+    std::set<std::uint64_t> seeds;
+    for (int shard = 0; shard < 8; ++shard)
+        for (const char* p : {"conforms", "watertight", "tie_rule"}) seeds.insert(case_seed(1, shard, p));
+    EXPECT_EQ(seeds.size(), 24u);
+    EXPECT_EQ(case_seed(5, 2, "conforms"), case_seed(5, 2, "conforms"));
+}
+
+TEST_F(Conform, TheFixedPathPluginsConformOnTheCorpusAndGeneratedCases) {
+    const std::vector<Case> cases = corpus();
+    for (const char* name : {"fixed4", "fixed8", "fixed16"}) {
+        const Engine plugin = plugin_engine(std::string(RAST_PLUGINS) + "/rast-plugin-" + name + ".so");
+        Options options;
+        options.cases = 40;
+        options.found = found;
+        const Verdict v = battery(plugin, cases, options);
+        EXPECT_TRUE(v.conforms()) << name;
+        std::set<std::string> judged;
+        for (const PropertyVerdict& p : v.properties) {
+            judged.insert(p.property);
+            EXPECT_FALSE(p.failure) << name << " " << p.property << ": " << p.failure->detail;
+            EXPECT_GE(p.checked, 40u) << name << " " << p.property;
+        }
+        EXPECT_EQ(judged, (std::set<std::string>{"watertight", "tie_rule", "winding_invariance",
+                                                 "translation_invariance", "order_independence",
+                                                 "fixed_matches_reference", "msaa_counts", "area_tiling",
+                                                 "conforms"}))
+            << name;
+    }
+    EXPECT_FALSE(fs::exists(found));  // nothing to keep
+}
+
+TEST_F(Conform, TheTutorialRasterizerFailsThreePropertiesOnSmallScenes) {
+    const std::string library = std::string(RAST_PLUGINS) + "/rast-plugin-naive.so";
+    const Engine naive = plugin_engine(library);
+    Options options;
+    options.cases = 100;
+    options.found = found;
+    options.engine_option = "plugin:" + library;
+    const Verdict v = battery(naive, corpus(), options);
+    EXPECT_FALSE(v.conforms());
+    std::size_t failed = 0;
+    for (const PropertyVerdict& p : v.properties) {
+        if (!p.failure) continue;
+        ++failed;
+        EXPECT_LE(p.failure->scene.triangles.size(), 4u) << p.property << " from " << p.failure->origin;
+        ASSERT_TRUE(fs::exists(p.failure->kept)) << p.property;
+        // The kept case names the property and fails it again on the engine.
+        const Case kept = read_case(p.failure->kept);
+        EXPECT_EQ(kept.claims, (std::vector<std::string>{p.property}));
+        EXPECT_TRUE(properties::property(p.property).verdict_on(kept.scene, naive).failed()) << p.property;
+        EXPECT_EQ(p.failure->kept.filename().string().rfind("naive-" + p.property + "-", 0), 0u);
+    }
+    EXPECT_GE(failed, 3u);
+}
+
+}  // namespace
+}  // namespace rast::conform
