@@ -107,5 +107,28 @@ TEST_F(Conform, TheTutorialRasterizerFailsThreePropertiesOnSmallScenes) {
     EXPECT_GE(failed, 3u);
 }
 
+// The careful engine was written from the lecture and the specs without rast's code (careful.c): it must
+// pass the battery that catches each of its seeded defects.
+TEST_F(Conform, AnIndependentEngineConformsAndEachSeededDefectIsCaught) {
+    const std::vector<Case> cases = corpus();
+    Options options;
+    options.cases = 40;
+    options.found = found;
+    const Verdict careful = battery(plugin_engine(std::string(RAST_TEST_PLUGINS) + "/careful.so"), cases, options);
+    for (const PropertyVerdict& p : careful.properties)
+        EXPECT_FALSE(p.failure) << p.property << ": " << p.failure->detail;
+    for (const char* defect :
+         {"ties_bottom_right", "snap_truncate", "last_wins_tie", "ids_off_by_one", "top_row_unwritten"}) {
+        const Verdict v =
+            battery(plugin_engine(std::string(RAST_TEST_PLUGINS) + "/careful-" + defect + ".so"), cases, options);
+        const auto conforms = std::find_if(v.properties.begin(), v.properties.end(),
+                                           [](const PropertyVerdict& p) { return p.property == "conforms"; });
+        ASSERT_NE(conforms, v.properties.end());
+        ASSERT_TRUE(conforms->failure) << defect;
+        EXPECT_LE(conforms->failure->scene.triangles.size(), 4u) << defect;
+        EXPECT_TRUE(fs::exists(conforms->failure->kept)) << defect;
+    }
+}
+
 }  // namespace
 }  // namespace rast::conform
