@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -129,6 +130,30 @@ TEST_F(Conform, AnIndependentEngineConformsAndEachSeededDefectIsCaught) {
         EXPECT_TRUE(fs::exists(conforms->failure->kept)) << defect;
     }
 }
+
+#ifdef RAST_LLVMPIPE_PLUGIN
+// llvmpipe keeps snap=8 rounding=any ties=top-left depth=none wherever GL's float vertices resolve the
+// 1/256 grid: on every corpus case whose coordinates stay below 2^15 pixels. (Past that, float rounding
+// and GL's clipper move its edges further: README.md gives its verdict on the whole battery.)
+TEST_F(Conform, LlvmpipeKeepsItsContractWhereFloatsResolveTheGrid) {
+    std::vector<Case> within;
+    for (Case& c : corpus()) {
+        bool small = true;
+        for (const Triangle& t : c.scene.triangles)
+            for (const Vertex& v : t.v) small = small && std::abs(v.x) < 32768 && std::abs(v.y) < 32768;
+        if (small) within.push_back(std::move(c));
+    }
+    ASSERT_GT(within.size(), 50u);
+    const Engine llvmpipe = plugin_engine(RAST_LLVMPIPE_PLUGIN);
+    Options options;
+    options.found = found;
+    const Verdict v = judge(llvmpipe, within, options);
+    for (const PropertyVerdict& p : v.properties) {
+        EXPECT_FALSE(p.failure) << p.property << ": " << p.failure->detail << " (" << p.failure->origin << ")";
+        EXPECT_GT(p.checked, 0u) << p.property;
+    }
+}
+#endif
 
 }  // namespace
 }  // namespace rast::conform

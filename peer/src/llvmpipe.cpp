@@ -72,24 +72,26 @@ int settled_llvmpipe_threads(int expected) {
 // The monotone map of the scene's z onto NDC [-1/2, 1/2], written so that no step overflows for
 // any finite doubles: q = (z/2 - mid) / half lies in [-1, 1].
 struct DepthMap {
-    double mid = 0, half = 0;
+    double lo = 0, half = 0;  // the scene's smallest z, and half the width of its z range
 
     DepthMap() = default;
     explicit DepthMap(const Scene& scene) {
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        double low = std::numeric_limits<double>::infinity(), high = -low;
         for (const Triangle& t : scene.triangles) {
             for (const Vertex& v : t.v) {
-                lo = std::min(lo, v.z);
-                hi = std::max(hi, v.z);
+                low = std::min(low, v.z);
+                high = std::max(high, v.z);
             }
         }
-        if (lo <= hi) {
-            mid = lo / 2 + hi / 2;
-            half = hi / 2 - lo / 2;
+        if (low <= high) {
+            lo = low;
+            half = high / 2 - low / 2;  // halves: the width itself may overflow
         }
     }
-    double to_ndc(double z) const { return half > 0 ? 0.5 * ((z / 2 - mid) / half) : 0.0; }
-    double from_ndc(double ndc) const { return 2 * (2 * ndc * half + mid); }
+    // [lo, hi] onto [-1/2, 1/2], monotone, lo and hi exactly to the ends: measured from lo, not from the
+    // midpoint, whose rounding can be as large as a narrow range's width.
+    double to_ndc(double z) const { return half > 0 ? (z / 2 - lo / 2) / half - 0.5 : 0.0; }
+    double from_ndc(double ndc) const { return 2 * (lo / 2 + (ndc + 0.5) * half); }
 };
 
 void check_coordinate(double c, std::size_t id, const char* axis, double limit) {

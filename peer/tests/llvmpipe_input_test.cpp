@@ -1,5 +1,6 @@
 // The peer refuses what it cannot render faithfully, and makes sure it really is llvmpipe.
 #include <rast/llvmpipe.h>
+#include <rast/reference.h>
 
 #include <gtest/gtest.h>
 
@@ -75,6 +76,25 @@ TEST(LlvmpipeInput, RejectsViewportsLargerThanLlvmpipeSupports) {
 TEST(LlvmpipeInput, EmptySceneLeavesEveryPixelEmpty) {
     const Framebuffer fb = render_llvmpipe(Scene{{3, 2}, 1, {}}, 1);
     for (const auto id : fb.ids) EXPECT_EQ(id, Framebuffer::kNoTriangle);
+}
+
+// Depths one ulp apart, far from zero: both triangles still reach the depth range and are drawn (a depth
+// map that scaled the narrow range without first centring it sent them past the far plane, and llvmpipe
+// drew nothing; rast conform found it). A 24-bit depth buffer cannot order them: coverage alone is checked.
+TEST(LlvmpipeInput, ANarrowDepthRangeFarFromZeroIsDrawn) {
+    const double z = 0.5, above = std::nextafter(z, 1.0);
+    const Scene scene{{4, 4}, 1, {Triangle{{Vertex{0, 0, above}, Vertex{4, 0, above}, Vertex{0, 4, above}}},
+                                  Triangle{{Vertex{0, 0, z}, Vertex{4, 0, z}, Vertex{4, 4, z}}}}};
+    const Framebuffer fb = render_llvmpipe(scene, 1);
+    const Framebuffer exact = reference::render(scene);
+    int covered = 0;
+    for (std::size_t k = 0; k < fb.ids.size(); ++k) {
+        EXPECT_EQ(fb.ids[k] != Framebuffer::kNoTriangle, exact.ids[k] != Framebuffer::kNoTriangle) << "pixel " << k;
+        covered += fb.ids[k] != Framebuffer::kNoTriangle;
+    }
+    // Centres below the anti-diagonal x + y = 4 (triangle 0; on it, its right edge) or right of the
+    // diagonal y = x (triangle 1; on it, its left edge): all but (1, 2), (0, 3), (1, 3) and (2, 3).
+    EXPECT_EQ(covered, 12);
 }
 
 }  // namespace

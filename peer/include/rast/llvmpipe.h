@@ -13,7 +13,8 @@
 //     Coordinates are rounded to float, as in any GL; GL's clipper cuts off parts of a triangle
 //     outside that square, which introduces off-grid vertices. The framebuffer lies in [0, 8192]^2.
 //   - z is mapped monotonically (affine, then rounded to float) from the scene's [z_min, z_max] onto
-//     the middle half of the depth range, so no vertex comes near the near or far plane.
+//     the middle half of the depth range, [-1/2, 1/2] in NDC, so no vertex comes near the near or far
+//     plane, however narrow the range and however far from zero.
 //   - Depth buffer: 24-bit fixed point (OSMesa's window buffer offers no float depth), GL_LESS.
 //     Depths closer than about (z_max - z_min) / 2^23 compare equal; llvmpipe also interpolates z in
 //     float. Triangles are drawn in id order, so a tie keeps the lower id, as our (z, id) order does,
