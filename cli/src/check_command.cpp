@@ -197,13 +197,26 @@ fs::path case_file(const CheckOptions& o, const Engine& engine) {
     return fs::path(o.corpus_out) / name;
 }
 
-// The violation as a corpus case: the triangles that cover the first violating sample. For a scene
-// they are a folded or cracked tiling, which watertight rejects; for a mesh, front and back faces
-// overlap by nature, so the case names the per-triangle properties that catch a wrong coverage.
+// The violation as a corpus case: the triangles that cover the first violating sample, as the engine
+// drew them or as the tie rule would on the geometry it rasterizes (so that a triangle the engine
+// wrongly left out is there too). For a scene they are a folded or cracked tiling, which watertight
+// rejects; for a mesh, front and back faces overlap by nature, so the case names the per-triangle
+// properties that catch a wrong coverage.
 fs::path keep_case(const CheckOptions& o, const Engine& engine, const Scene& scene, const Coverage& coverage,
                    const Violation& first, bool mesh) {
+    const auto drawn = coverage.at(first.sample);
+    const std::size_t pixel = first.sample / static_cast<std::size_t>(scene.samples);
+    const SamplePoint p = sample_pattern(scene.samples)[first.sample % static_cast<std::size_t>(scene.samples)];
+    const double x = static_cast<double>(pixel % static_cast<std::size_t>(scene.viewport.width)) + p.x;
+    const double y = static_cast<double>(pixel / static_cast<std::size_t>(scene.viewport.width)) + p.y;
+    const bool one_geometry = !engine.contract || engine.contract->deterministic();
     Scene kept{scene.viewport, scene.samples, {}};
-    for (std::uint32_t k : coverage.at(first.sample)) kept.triangles.push_back(scene.triangles[k]);
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
+        const Triangle& t = scene.triangles[k];
+        const bool by_engine = std::find(drawn.begin(), drawn.end(), k) != drawn.end();
+        const bool by_rule = one_geometry && properties::rule_covers(properties::rasterized_geometry(engine, t), x, y);
+        if (by_engine || by_rule) kept.triangles.push_back(t);
+    }
     const std::string where = describe_sample(scene.viewport, scene.samples, first.sample);
     const TriHeader header{
         {"properties", mesh ? "tie_rule float_within_bound" : "watertight"},

@@ -10,6 +10,10 @@ namespace {
 const std::string kFixed8 = RAST_PLUGINS "/rast-plugin-fixed8.so";
 const std::string kNaive = RAST_PLUGINS "/rast-plugin-naive.so";
 std::string misbehaving(const std::string& way) { return RAST_TEST_PLUGINS "/misbehaving-" + way + ".so"; }
+// The careful engine of plugin/tests/plugins/careful.c, or the same with one seeded defect.
+std::string misbehaving_careful(const std::string& defect) {
+    return RAST_TEST_PLUGINS "/careful" + (defect.empty() ? "" : "-" + defect) + ".so";
+}
 
 // Two triangles sharing the diagonal of a 2x2 square, which passes through the centres (0.5, 0.5) and
 // (1.5, 1.5). Counter-clockwise, the diagonal is triangle 0's edge (2,2)->(0,0), a left edge (dy < 0), and
@@ -92,6 +96,26 @@ TEST_F(PluginCommands, DiffComparesAPluginWithTheReference) {
     EXPECT_TRUE(contains(r.out, "compare: reference (exact) vs plugin naive (" + kNaive + ")")) << r.out;
     // ">= 0" lets both triangles cover the diagonal's two centres, and "<=" gives them to the later one.
     EXPECT_TRUE(contains(r.out, "differing samples: 2 of 4")) << r.out;
+}
+
+// A closed mesh checked with an engine that culls clockwise triangles: every covered sample is front-facing
+// only. The kept case holds the triangle the engine left out too, so it fails again on that engine, and
+// passes on rast's own.
+TEST_F(PluginCommands, CheckKeepsACaseThatReproducesAPluginsFailure) {
+    const std::string mesh = std::string(RAST_TEST_DATA) + "/sliver-sphere.off --width 20 --height 20";
+    const Result careful = rast("check " + mesh + " --engine plugin:" + misbehaving_careful(""));
+    EXPECT_EQ(careful.status, 0) << careful.out;
+    const Result culling =
+        rast("check " + mesh + " --engine plugin:" + misbehaving_careful("culls_clockwise") + " --corpus-out " +
+             out("found"));
+    EXPECT_EQ(culling.status, 1) << culling.out;
+    const std::string kept = out("found/check-sliver-sphere-careful.tri");
+    ASSERT_TRUE(std::filesystem::exists(kept)) << culling.out;
+    const Result again = rast("replay --engine plugin:" + misbehaving_careful("culls_clockwise") + " " + kept);
+    EXPECT_EQ(again.status, 1) << again.out;
+    EXPECT_TRUE(contains(again.out, "tie_rule [careful]: ")) << again.out;
+    const Result built_in = rast("replay " + kept);
+    EXPECT_EQ(built_in.status, 0) << built_in.out;
 }
 
 TEST_F(PluginCommands, ConformCatchesTheTutorialRasterizerAndKeepsReplayableCases) {

@@ -119,7 +119,8 @@ TEST_F(Conform, AnIndependentEngineConformsAndEachSeededDefectIsCaught) {
     for (const PropertyVerdict& p : careful.properties)
         EXPECT_FALSE(p.failure) << p.property << ": " << p.failure->detail;
     for (const char* defect :
-         {"ties_bottom_right", "snap_truncate", "last_wins_tie", "ids_off_by_one", "top_row_unwritten"}) {
+         {"ties_bottom_right", "snap_truncate", "last_wins_tie", "ids_off_by_one", "top_row_unwritten",
+          "culls_clockwise"}) {
         const Verdict v =
             battery(plugin_engine(std::string(RAST_TEST_PLUGINS) + "/careful-" + defect + ".so"), cases, options);
         const auto conforms = std::find_if(v.properties.begin(), v.properties.end(),

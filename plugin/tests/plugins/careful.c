@@ -13,7 +13,8 @@
  *   DEFECT_SNAP_TRUNCATE      coordinates cut toward zero instead of rounded to nearest
  *   DEFECT_LAST_WINS_TIE      equal depths go to the later triangle
  *   DEFECT_IDS_OFF_BY_ONE     each sample gets the id one below its triangle's
- *   DEFECT_TOP_ROW_UNWRITTEN  the top row of pixels is never written (left as rast set it, -1) */
+ *   DEFECT_TOP_ROW_UNWRITTEN  the top row of pixels is never written (left as rast set it, -1)
+ *   DEFECT_CULLS_CLOCKWISE    clockwise triangles are dropped, as by back-face culling left on */
 #include <rast/plugin.h>
 
 #include <gmp.h>
@@ -122,6 +123,9 @@ int rast_plugin_render(const rast_plugin_scene *scene, int32_t *ids, char *err, 
         edge(area, t.x[0], t.y[0], t.x[1], t.y[1], t.x[2], t.y[2], t1, t2);
         if (mpz_sgn(area) == 0) continue;
         if (mpz_sgn(area) < 0) { /* the same point set, counter-clockwise */
+#ifdef DEFECT_CULLS_CLOCKWISE
+            continue;
+#endif
             mpz_swap(t.x[1], t.x[2]);
             mpz_swap(t.y[1], t.y[2]);
             mpq_swap(t.z[1], t.z[2]);
