@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <rast/plugin_engine.h>
+
+#include <cstdlib>
+
 #include "property_harness.h"
 
 namespace {
@@ -11,8 +15,15 @@ namespace {
 using rast::harness::hold;
 using rast::gen::scenes_for;
 
+// rast's own engines, and the plugin $RAST_PROPERTY_PLUGIN names when it is set: the properties its
+// contract implies hold on it too (rast conform runs the same properties as a command).
 const std::vector<rast::Engine>& engines() {
-    static const auto all = rast::all_engines();
+    static const auto all = [] {
+        auto engines = rast::all_engines();
+        if (const char* plugin = std::getenv("RAST_PROPERTY_PLUGIN"); plugin && *plugin)
+            engines.push_back(rast::plugin_engine(plugin));
+        return engines;
+    }();
     return all;
 }
 
