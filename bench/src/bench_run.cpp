@@ -109,15 +109,18 @@ SpeedRow speed_row(const SceneInfo& scene, std::string engine, int threads, std:
             static_cast<double>(scene.triangles) / s.median, static_cast<double>(scene.fragments.value_or(0)) / s.median};
 }
 
-ErrorRow error_row(const SceneInfo& scene, std::string engine, const BufferDifference& buffers) {
+// `depths`: whether the engine writes depths to compare (a plugin does not).
+ErrorRow error_row(const SceneInfo& scene, std::string engine, const BufferDifference& buffers, bool depths = true) {
     ErrorRow row;
     row.scene = scene.name;
     row.engine = std::move(engine);
     row.samples = static_cast<std::uint64_t>(scene.viewport.width) * static_cast<std::uint64_t>(scene.viewport.height) *
                   static_cast<std::uint64_t>(scene.samples);
     row.ids_differing = buffers.ids;
-    row.depths_differing = buffers.depths;
-    row.worst_depth_error = buffers.worst_depth;
+    if (depths) {
+        row.depths_differing = buffers.depths;
+        row.worst_depth_error = buffers.worst_depth;
+    }
     return row;
 }
 
@@ -148,7 +151,7 @@ void time_in_rounds(std::vector<Contender>& contenders, std::size_t rounds) {
 
 // Speed of every engine and thread count, then each one's error against the reference's framebuffer.
 // With `time` false (the hard cases) every engine renders once, untimed.
-void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& speed,
+void measure(BenchScene& s, const Plan& plan, std::span<const Engine> plugins, bool time, std::vector<SpeedRow>& speed,
              std::vector<ErrorRow>& errors, std::vector<std::string>& notes, std::ostream& progress) {
     const Scene& scene = s.scene;
     progress << "[" << s.info.name << "] " << scene.triangles.size() << " triangles: reference" << std::flush;
@@ -184,6 +187,20 @@ void measure(BenchScene& s, const Plan& plan, bool time, std::vector<SpeedRow>& 
                                   [&scene, &result, engine] { return seconds_of([&] { engine.draw(scene, result); }); },
                                   {}, {}});
         }
+    }
+    // Plugins (--engine plugin:PATH), one thread as far as rast knows: ids only, so no coverage columns.
+    std::vector<Framebuffer> plugin_results;
+    plugin_results.reserve(plugins.size());
+    for (const Engine& plugin : plugins) {
+        if (plugin.contract && !plugin.contract->renders(scene.samples)) continue;
+        const std::string label = "plugin:" + plugin.name;  // apart from rast's own engine of that name
+        progress << ", " << label << std::flush;
+        Framebuffer& result = plugin_results.emplace_back(plugin.render(scene));
+        rows.push_back(error_row(s.info, label, compare_buffers(exact, result), plugin.writes_depth()));
+        if (time)
+            contenders.push_back({label, 1,
+                                  [&scene, &result, plugin] { return seconds_of([&] { plugin.draw(scene, result); }); },
+                                  {}, {}});
     }
     // llvmpipe in child processes, one per thread count, each kept or skipped on its own; the first
     // thread count's draw gives the error (untimed, it is the only one).
@@ -266,13 +283,13 @@ Report run_bench(const Config& config, std::ostream& progress) {
             report.notes.push_back("this machine runs " + std::to_string(fast::max_threads()) +
                                    " fast-path thread(s): its rows for more threads ran on that many");
         for (BenchScene& s : main_scenes(config, plan)) {
-            measure(s, plan, true, report.speed, report.errors, report.notes, progress);
+            measure(s, plan, config.plugins, true, report.speed, report.errors, report.notes, progress);
             report.scenes.push_back(s.info);
         }
     }
     if (config.hard) {
         for (BenchScene& s : hard_families(plan)) {
-            measure(s, plan, false, report.speed, report.hard_cases, report.notes, progress);
+            measure(s, plan, config.plugins, false, report.speed, report.hard_cases, report.notes, progress);
             report.hard_families.push_back(s.info);
         }
     }

@@ -26,8 +26,8 @@ json errors_json(const std::vector<ErrorRow>& errors) {
         out.push_back({{"scene", e.scene}, {"engine", e.engine}, {"samples", e.samples},
                        {"misclassified_samples", optional_count(e.misclassified)},
                        {"triangles_affected", optional_count(e.triangles_affected)},
-                       {"ids_differing", e.ids_differing}, {"depths_differing", e.depths_differing},
-                       {"worst_depth_error", e.worst_depth_error},
+                       {"ids_differing", e.ids_differing}, {"depths_differing", optional_count(e.depths_differing)},
+                       {"worst_depth_error", e.worst_depth_error ? json(*e.worst_depth_error) : json(nullptr)},
                        {"watertight_violations", optional_count(e.watertight_violations)}});
     }
     return out;

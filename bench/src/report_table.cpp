@@ -42,7 +42,7 @@ std::string errors_table(const std::vector<ErrorRow>& errors, const char* scene_
     for (const ErrorRow& e : errors) {
         out += row({e.scene, e.engine, std::to_string(e.samples), count(e.misclassified),
                     count(e.triangles_affected), std::to_string(e.ids_differing),
-                    std::to_string(e.depths_differing), number(e.worst_depth_error, "%.2g"),
+                    count(e.depths_differing), e.worst_depth_error ? number(*e.worst_depth_error, "%.2g") : "—",
                     count(e.watertight_violations)});
     }
     return out;

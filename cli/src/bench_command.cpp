@@ -7,6 +7,8 @@
 #include <rast/atomic_file.h>
 #include <rast/bench_run.h>
 
+#include <rast/plugin_engine.h>
+
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -37,6 +39,8 @@ struct BenchOptions {
     std::string mesh = default_mesh();
     std::optional<std::string> json_out, plot_out, markdown_out;
     std::vector<std::string> notes;
+    std::vector<std::string> plugins;  // --engine plugin:PATH, each
+    double plugin_timeout = 60;
 };
 
 // The command as it could be typed again, for the report.
@@ -49,6 +53,7 @@ std::string command_line(const BenchOptions& o) {
     if (o.plot_out) command += " --plot " + shell_word(*o.plot_out);
     if (o.markdown_out) command += " --markdown " + shell_word(*o.markdown_out);
     for (const std::string& note : o.notes) command += " --note " + shell_word(note);
+    for (const std::string& plugin : o.plugins) command += " --engine " + shell_word(plugin);
     return command;
 }
 
@@ -78,6 +83,7 @@ void run(const BenchOptions& o) {
     }
     config.mesh = o.mesh;
     config.command = command_line(o);
+    for (const std::string& plugin : o.plugins) config.plugins.push_back(plugin_engine(plugin.substr(7), {o.plugin_timeout}));
     bench::Report report = bench::run_bench(config, std::cerr);
     report.notes.insert(report.notes.end(), o.notes.begin(), o.notes.end());
     std::cout << bench::format_table(report);
@@ -117,6 +123,19 @@ void add_bench_command(CLI::App& app) {
     bench->add_option("--plot", options->plot_out, "Write the speed-against-error plot as SVG");
     bench->add_option("--markdown", options->markdown_out, "Write the tables as Markdown, with the plot");
     bench->add_option("--note", options->notes, "A remark for the report, e.g. about the machine");
+    CLI::Option* engine =
+        bench->add_option("--engine", options->plugins,
+                          "Also time and measure plugin:PATH, a rasterizer plugin (repeatable), on the speed and "
+                          "hard-case scenes its contract renders")
+            ->type_name("plugin:PATH")
+            ->check([](const std::string& s) {
+                return s.starts_with("plugin:") && s.size() > 7 ? std::string{} : "expected plugin:PATH";
+            });
+    bench->add_option("--plugin-timeout", options->plugin_timeout,
+                      "Seconds a plugin may take to load, and to render one scene, before it is stopped")
+        ->check(CLI::Range(0.001, 86400.0))
+        ->needs(engine)
+        ->capture_default_str();
     bench->callback([options] { run(*options); });
 }
 

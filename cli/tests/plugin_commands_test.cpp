@@ -170,5 +170,22 @@ TEST_F(PluginCommands, ConformRefusesABadShard) {
     }
 }
 
+#ifdef RAST_WITH_BENCH
+// A plugin measured beside rast's engines: its own rows, ids compared with the reference, no depth columns.
+TEST_F(PluginCommands, BenchMeasuresAPluginBesideRastsEngines) {
+    const Result r = rast("bench --quick --only hard --engine plugin:" + kNaive);
+    ASSERT_EQ(r.status, 0) << r.out;
+    // Vertices on pixel centres put samples on edges, where ">= 0" and "<=" give other ids than the rule.
+    const std::size_t row = r.out.find("| vertices on centres | plugin:naive | 4096 | — | — | ");
+    ASSERT_NE(row, std::string::npos) << r.out;
+    const std::string line = r.out.substr(row, r.out.find('\n', row) - row);
+    EXPECT_TRUE(line.ends_with("| — | — | — |")) << line;  // depths, worst depth error, watertightness
+    EXPECT_EQ(line.find("| 0 | — |"), std::string::npos) << line;  // some ids differ
+    const Result refused = rast("bench --quick --only hard --engine fast");
+    EXPECT_EQ(refused.status, 2) << refused.out;
+    EXPECT_TRUE(contains(refused.out, "expected plugin:PATH")) << refused.out;
+}
+#endif
+
 }  // namespace
 }  // namespace rast::cli::testing

@@ -45,8 +45,11 @@ struct ErrorRow {
     std::uint64_t samples = 0;  // samples in the framebuffer
     // From each triangle's covered samples; llvmpipe gives only its framebuffer, so none there.
     std::optional<std::uint64_t> misclassified, triangles_affected;
-    std::uint64_t ids_differing = 0, depths_differing = 0;  // depths: bit for bit
-    double worst_depth_error = 0;  // largest |z - z_reference| where both hold the same triangle
+    std::uint64_t ids_differing = 0;
+    // Depths bit for bit, and the largest |z - z_reference| where both hold the same triangle; none for a
+    // plugin, which returns ids alone.
+    std::optional<std::uint64_t> depths_differing;
+    std::optional<double> worst_depth_error;
     std::optional<std::uint64_t> watertight_violations;  // scenes with shared edges only
 };
 

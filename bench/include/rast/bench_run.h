@@ -2,10 +2,12 @@
 #pragma once
 
 #include <rast/bench_report.h>
+#include <rast/engine.h>
 
 #include <filesystem>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 namespace rast::bench {
 
@@ -16,6 +18,9 @@ struct Config {
     bool aa = true;      // the sample patterns against the exact area
     std::filesystem::path mesh;  // the real mesh; the Stanford bunny in meshes/bunny.off
     std::string command;         // as typed, recorded in the report
+    // Plugins timed and compared beside rast's engines on the speed and hard-case scenes whose sample
+    // count their contract renders (one thread as rast counts; ids only, so no coverage or depth columns).
+    std::vector<Engine> plugins;
 };
 
 // Progress goes to `progress`, one line per measurement. Throws what the engines or the mesh reader throw.
