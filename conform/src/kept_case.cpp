@@ -2,7 +2,6 @@
 
 #include <rast/tri_format.h>
 
-#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <sstream>
@@ -21,15 +20,6 @@ std::uint64_t fnv1a(const std::string& text) {
     return h;
 }
 
-// A header value is one line without surrounding blanks.
-std::string one_line(std::string text) {
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    std::replace(text.begin(), text.end(), '\r', ' ');
-    const auto first = text.find_first_not_of(" \t");
-    const auto last = text.find_last_not_of(" \t");
-    return first == std::string::npos ? "-" : text.substr(first, last - first + 1);
-}
-
 }  // namespace
 
 std::filesystem::path keep_case(const std::filesystem::path& folder, const Scene& scene, const KeptCase& what) {
@@ -40,7 +30,7 @@ std::filesystem::path keep_case(const std::filesystem::path& folder, const Scene
     const auto path = folder / (what.engine + "-" + what.property + "-" + digits + ".tri");
     TriHeader header;
     if (what.property != "engine-error") header.push_back({"properties", what.property});
-    header.push_back({"why", one_line("rast conform [" + what.engine + "]: " + what.why)});
+    header.push_back({"why", header_value("rast conform [" + what.engine + "]: " + what.why)});
     header.push_back({"found-by", "rast conform"});
     if (!what.contract.empty()) header.push_back({"contract", what.contract});
     header.push_back({"reproduce", "rast replay --engine " + what.engine_option + " " + path.string()});

@@ -11,6 +11,8 @@
 #include <exception>
 #include <string>
 
+#include "../abi_scene.h"
+
 namespace {
 
 constexpr rast::fast::Precision kPrecision = rast::fast::Precision::RAST_PLUGIN_PRECISION;
@@ -41,14 +43,7 @@ const char* rast_plugin_contract(void) {
 
 int rast_plugin_render(const rast_plugin_scene* scene, int32_t* ids, char* err, size_t errlen) {
     try {
-        rast::Scene s{{scene->width, scene->height}, scene->samples, {}};
-        s.triangles.resize(scene->triangle_count);
-        const double* v = scene->vertices;
-        for (rast::Triangle& t : s.triangles)
-            for (rast::Vertex& corner : t.v) {
-                corner = {v[0], v[1], v[2]};
-                v += 3;
-            }
+        const rast::Scene s = rast::plugins::scene_of(*scene);
         static rast::fast::Renderer renderer;  // the host renders one scene at a time
         rast::Framebuffer fb;
         renderer.render(s, fb, {kPrecision, 1});

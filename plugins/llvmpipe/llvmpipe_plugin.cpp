@@ -18,6 +18,8 @@
 #include <limits>
 #include <memory>
 
+#include "../abi_scene.h"
+
 namespace {
 
 bool fits_float(double v) { return std::abs(v) <= static_cast<double>(std::numeric_limits<float>::max()) - 1e32; }
@@ -33,14 +35,8 @@ const char* rast_plugin_contract(void) { return "name=llvmpipe samples=1 snap=8 
 int rast_plugin_render(const rast_plugin_scene* scene, int32_t* ids, char* err, size_t errlen) {
     try {
         static const auto llvmpipe = std::make_unique<rast::peer::Llvmpipe>(0);
-        rast::Scene s{{scene->width, scene->height}, scene->samples, {}};
-        s.triangles.resize(scene->triangle_count);
-        const double* v = scene->vertices;
+        rast::Scene s = rast::plugins::scene_of(*scene);
         for (rast::Triangle& t : s.triangles) {
-            for (rast::Vertex& corner : t.v) {
-                corner = {v[0], v[1], v[2]};
-                v += 3;
-            }
             const bool drawable = std::all_of(t.v.begin(), t.v.end(), [&](const rast::Vertex& c) {
                 return fits_float(c.x) && fits_float(scene->height - c.y);
             });

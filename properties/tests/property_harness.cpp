@@ -5,7 +5,6 @@
 
 #include <rapidcheck/detail/Configuration.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -35,15 +34,6 @@ std::filesystem::path corpus_dir() {
     return RAST_DEFAULT_CORPUS_OUT;
 }
 
-// A header value is one line without surrounding blanks.
-std::string one_line(std::string text) {
-    std::replace(text.begin(), text.end(), '\n', ' ');
-    std::replace(text.begin(), text.end(), '\r', ' ');
-    const auto first = text.find_first_not_of(" \t");
-    const auto last = text.find_last_not_of(" \t");
-    return first == std::string::npos ? "-" : text.substr(first, last - first + 1);
-}
-
 }  // namespace
 
 std::filesystem::path keep_counterexample(std::string_view property, const std::string& engine, const Scene& scene,
@@ -58,7 +48,7 @@ std::filesystem::path keep_counterexample(std::string_view property, const std::
     write_tri_file(path, scene,
                    {{"properties", std::string(property)},
                     {"engine", engine},
-                    {"why", one_line(why)},
+                    {"why", header_value(why)},
                     {"seed", seed},
                     {"found-by", "property_tests"},
                     {"reproduce", "RC_PARAMS=\"seed=" + seed + " max_success=" + std::to_string(params.maxSuccess) +

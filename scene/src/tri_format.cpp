@@ -1,5 +1,6 @@
 #include "rast/tri_format.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -151,6 +152,13 @@ TriDocument read_tri_document_file(const std::filesystem::path& path) {
 Scene read_tri(std::istream& in, const std::string& name) { return read_tri_document(in, name).scene; }
 
 Scene read_tri_file(const std::filesystem::path& path) { return read_tri_document_file(path).scene; }
+
+std::string header_value(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    std::replace(text.begin(), text.end(), '\r', ' ');
+    const std::string_view value = trim(text);
+    return value.empty() ? "-" : std::string(value);
+}
 
 std::string hex_float(double value) {
     char digits[64];

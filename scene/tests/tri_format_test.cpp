@@ -116,6 +116,17 @@ TEST(TriFormat, EverySpellingReadsAsStrtodReadsIt) {
             << spellings[k].substr(0, 60) << " (" << spellings[k].size() << " characters)";
 }
 
+TEST(TriFormat, HeaderValueMakesAnyTextOneLine) {
+    EXPECT_EQ(header_value("a\nb\r\nc"), "a b  c");
+    EXPECT_EQ(header_value("  two words \t"), "two words");
+    EXPECT_EQ(header_value(""), "-");
+    EXPECT_EQ(header_value("\r\n "), "-");
+    // What it gives, write_tri takes.
+    std::ostringstream out;
+    write_tri(out, Scene{{1, 1}, 1, {}}, {{"why", header_value(" a\nb ")}});
+    EXPECT_EQ(out.str().substr(0, 11), "# why: a b\n");
+}
+
 TEST(TriFormat, HexFloatIsC99) {
     EXPECT_EQ(hex_float(12.0), "0x1.8p+3");
     EXPECT_EQ(hex_float(1.0), "0x1p+0");

@@ -45,6 +45,10 @@ Scene read_tri_file(const std::filesystem::path& path);
 // value with a line break or surrounding blanks.
 void write_tri(std::ostream& out, const Scene& scene, const TriHeader& header = {});
 
+// Any text as a header value write_tri takes: line breaks become blanks, surrounding blanks go, and an
+// empty text becomes "-".
+std::string header_value(std::string text);
+
 // write_tri into a file, atomically (rast/atomic_file.h).
 void write_tri_file(const std::filesystem::path& path, const Scene& scene, const TriHeader& header = {});
 
