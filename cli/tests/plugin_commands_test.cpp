@@ -159,7 +159,15 @@ TEST_F(PluginCommands, ConformKeepsTheSceneAPluginCrashedOn) {
     const Result r = rast("conform " + misbehaving("crash") + " " + scene + " --found " + out("found"));
     EXPECT_EQ(r.status, 2) << r.out;
     EXPECT_TRUE(contains(r.out, "crashed (signal 11, Segmentation fault) rendering a scene of 2 triangles")) << r.out;
-    EXPECT_TRUE(contains(r.out, "; the scene is kept in " + out("found") + "/misbehaving-engine-error-")) << r.out;
+    const std::string prefix = "; the scene is kept in ";
+    const std::size_t at = r.out.find(prefix + out("found") + "/misbehaving-engine-error-");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::size_t begin = at + prefix.size();
+    const std::string kept = r.out.substr(begin, r.out.find(' ', begin) - begin);
+    const Result again = rast("replay --engine plugin:" + misbehaving("crash") + " " + kept);
+    EXPECT_EQ(again.status, 2) << again.out;
+    EXPECT_TRUE(contains(again.out, "crashed (signal 11, Segmentation fault) rendering a scene of 2 triangles"))
+        << again.out;
 }
 
 TEST_F(PluginCommands, ConformRefusesABadShard) {

@@ -29,7 +29,8 @@ std::filesystem::path keep_case(const std::filesystem::path& folder, const Scene
     std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(fnv1a(body.str())));
     const auto path = folder / (what.engine + "-" + what.property + "-" + digits + ".tri");
     TriHeader header;
-    if (what.property != "engine-error") header.push_back({"properties", what.property});
+    // A case the engine failed outright on replays through conforms, which renders it.
+    header.push_back({"properties", what.property == "engine-error" ? "conforms" : what.property});
     header.push_back({"why", header_value("rast conform [" + what.engine + "]: " + what.why)});
     header.push_back({"found-by", "rast conform"});
     if (!what.contract.empty()) header.push_back({"contract", what.contract});
