@@ -33,6 +33,14 @@ TEST_F(PluginCommands, RenderWithAPluginWritesWhatTheFastPathWrites) {
     EXPECT_EQ(read("plugin.txt"), read("fast.txt"));
 }
 
+// With standard input (and fd 3) closed, the socket pair to the plugin's process takes fds 0 and 3: the
+// end the host is to read as fd 3 must still reach it.
+TEST_F(PluginCommands, APluginRunsWithAStandardStreamClosed) {
+    const Result r = rast("render --default --engine plugin:" + kFixed8 + " <&- 3>&-");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(contains(r.out, "covered: 24576 of 24576 samples")) << r.out;
+}
+
 TEST_F(PluginCommands, APluginThatCrashesEndsTheCommandWithItsReasonAndWritesNothing) {
     const Result r = rast("render --default --engine plugin:" + misbehaving("crash") + " -o " + out("picture.png") +
                           " --ids-out " + out("ids.txt"));

@@ -2,6 +2,7 @@
 
 #include <rast/engine.h>
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/socket.h>
@@ -58,8 +59,9 @@ PluginProcess::PluginProcess(std::string library, double timeout) : library_(std
         fail(std::string("cannot start a process for it: ") + std::strerror(errno));
     }
     if (pid_ == 0) {
-        // The child: only async-signal-safe calls until exec. dup2 clears close-on-exec on fd 3.
-        if (dup2(sockets[1], kSocketFd) < 0) _exit(126);
+        // The child: only async-signal-safe calls until exec. dup2 clears close-on-exec on fd 3, unless the
+        // socket already is fd 3 (rast started with a standard stream closed): then fcntl does.
+        if (sockets[1] == kSocketFd ? fcntl(kSocketFd, F_SETFD, 0) < 0 : dup2(sockets[1], kSocketFd) < 0) _exit(126);
         const char* argv[] = {host.c_str(), library_.c_str(), nullptr};
         execv(host.c_str(), const_cast<char* const*>(argv));
         _exit(127);
