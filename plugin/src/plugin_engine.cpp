@@ -1,5 +1,7 @@
 #include <rast/plugin_engine.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -21,7 +23,12 @@ std::string where(const Framebuffer& fb, std::size_t index) {
 
 }  // namespace
 
-Engine plugin_engine(const std::string& library, const PluginOptions& options) {
+Engine plugin_engine(const std::string& given, const PluginOptions& options) {
+    // dlopen searches the library path for a name without a '/': a file that is there is meant, as given.
+    std::error_code unseen;
+    const std::string library = given.find('/') == std::string::npos && std::filesystem::is_regular_file(given, unseen)
+                                    ? "./" + given
+                                    : given;
     auto process = std::make_shared<plugin_host::PluginProcess>(library, options.timeout);
     Contract contract;
     try {
@@ -35,12 +42,14 @@ Engine plugin_engine(const std::string& library, const PluginOptions& options) {
             throw EngineError("plugin " + library + " (" + contract.name + ") does not render " +
                               std::to_string(scene.samples) + " samples a pixel (its contract: " +
                               contract.text() + ")");
-        const std::size_t samples = static_cast<std::size_t>(scene.viewport.width) *
-                                    static_cast<std::size_t>(scene.viewport.height) *
-                                    static_cast<std::size_t>(scene.samples);
+        // In 128 bits: a caller's viewport is not checked yet, and the product of its sides may wrap.
+        const auto samples = static_cast<unsigned __int128>(std::max(scene.viewport.width, 0)) *
+                             static_cast<unsigned __int128>(std::max(scene.viewport.height, 0)) *
+                             static_cast<unsigned __int128>(std::max(scene.samples, 0));
         if (samples > kMaxSamples)
-            throw EngineError("plugin " + library + ": a framebuffer of " + std::to_string(samples) +
-                              " samples is more than a plugin is sent (2^28)");
+            throw EngineError("plugin " + library + ": a framebuffer of " + std::to_string(scene.viewport.width) +
+                              "x" + std::to_string(scene.viewport.height) + " pixels and " +
+                              std::to_string(scene.samples) + " samples is more than a plugin is sent (2^28 samples)");
         fb.viewport = scene.viewport;
         fb.samples = scene.samples;
         fb.ids = process->render(scene);

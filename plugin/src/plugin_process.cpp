@@ -4,11 +4,13 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -59,8 +61,11 @@ PluginProcess::PluginProcess(std::string library, double timeout) : library_(std
         fail(std::string("cannot start a process for it: ") + std::strerror(errno));
     }
     if (pid_ == 0) {
-        // The child: only async-signal-safe calls until exec. dup2 clears close-on-exec on fd 3, unless the
-        // socket already is fd 3 (rast started with a standard stream closed): then fcntl does.
+        // The child: only async-signal-safe calls until exec. It ends with rast, even one killed outright
+        // (a batch job's time limit), rather than spin on in a hung plugin.
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0) _exit(126);
+        // dup2 clears close-on-exec on fd 3, unless the socket already is fd 3 (rast started with a
+        // standard stream closed): then fcntl does.
         if (sockets[1] == kSocketFd ? fcntl(kSocketFd, F_SETFD, 0) < 0 : dup2(sockets[1], kSocketFd) < 0) _exit(126);
         const char* argv[] = {host.c_str(), library_.c_str(), nullptr};
         execv(host.c_str(), const_cast<char* const*>(argv));
@@ -73,6 +78,7 @@ PluginProcess::PluginProcess(std::string library, double timeout) : library_(std
     std::string text = read_text(status.length, deadline, "loading it");
     if (!status.ok) fail(text);
     contract_ = std::move(text);
+    loaded_ = true;
 }
 
 PluginProcess::~PluginProcess() {
@@ -106,7 +112,8 @@ void PluginProcess::read_reply(void* data, std::size_t size, double deadline, co
     while (size > 0) {
         const double left = deadline - now();
         pollfd ready{socket_, POLLIN, 0};
-        const int polled = left > 0 ? poll(&ready, 1, static_cast<int>(std::ceil(left * 1000))) : 0;
+        // At most a day a poll, so that any timeout a caller gives fits an int of milliseconds.
+        const int polled = left > 0 ? poll(&ready, 1, static_cast<int>(std::ceil(std::min(left, 86400.0) * 1000))) : 0;
         if (polled < 0 && errno == EINTR) continue;
         if (polled == 0) {
             char seconds[32];
@@ -115,18 +122,27 @@ void PluginProcess::read_reply(void* data, std::size_t size, double deadline, co
         }
         const ssize_t n = polled < 0 ? -1 : read(socket_, p, size);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            // The host has gone: say how.
-            int status = 0;
-            const bool ended = waitpid(pid_, &status, 0) == pid_;
-            if (ended) pid_ = -1;
-            if (ended && WIFEXITED(status) && WEXITSTATUS(status) == 127)
-                fail("cannot run " + host_path() + " (set RAST_PLUGIN_HOST to where rast-plugin-host is)");
-            fail((ended ? ending(status) : std::string("closed its socket")) + " " + doing);
-        }
+        if (n <= 0) host_gone(deadline, doing);
         p += n;
         size -= static_cast<std::size_t>(n);
     }
+}
+
+void PluginProcess::host_gone(double deadline, const std::string& doing) {
+    // The socket has closed: the host has ended, or is about to. Wait for it until the deadline (a plugin
+    // may close the socket and go on running), then say how it ended.
+    int status = 0;
+    bool ended = false;
+    while (!ended && now() < deadline) {
+        ended = waitpid(pid_, &status, WNOHANG) == pid_;
+        if (!ended) usleep(1000);
+    }
+    if (!ended) fail("closed its socket " + doing + " and did not end; stopped it");
+    pid_ = -1;
+    // 127: execv failed in the child, before the host ran (a plugin that exits 127 later is a plugin).
+    if (!loaded_ && WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        fail("cannot run " + host_path() + " (set RAST_PLUGIN_HOST to where rast-plugin-host is)");
+    fail(ending(status) + " " + doing);
 }
 
 std::string PluginProcess::read_text(std::uint32_t length, double deadline, const std::string& doing) {
@@ -144,10 +160,10 @@ std::vector<std::int32_t> PluginProcess::render(const Scene& scene) {
     const SceneHeader header{kSceneMagic, scene.viewport.width, scene.viewport.height, scene.samples,
                              scene.triangles.size()};
     static_assert(sizeof(Triangle) == 9 * sizeof(double), "a Triangle is the ABI's 9 doubles");
+    const double deadline = now() + timeout_;
     if (!write_all(socket_, &header, sizeof header) ||
         !write_all(socket_, scene.triangles.data(), scene.triangles.size() * sizeof(Triangle)))
-        read_reply(nullptr, 1, now() + timeout_, doing);  // the host has gone: read_reply says how
-    const double deadline = now() + timeout_;
+        host_gone(deadline, doing);
     Status status{};
     read_reply(&status, sizeof status, deadline, doing);
     if (!status.ok) {

@@ -28,6 +28,8 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what);
+    // The socket closed while `doing`: reports how the host ended (waiting for it until the deadline).
+    [[noreturn]] void host_gone(double deadline, const std::string& doing);
     // Reads exactly `size` bytes before the deadline, or fails saying what was being read.
     void read_reply(void* data, std::size_t size, double deadline, const std::string& doing);
     std::string read_text(std::uint32_t length, double deadline, const std::string& doing);
@@ -37,6 +39,7 @@ private:
     pid_t pid_ = -1;
     int socket_ = -1;
     std::string contract_;
+    bool loaded_ = false;  // the host has sent the contract: it runs, and an exit is the plugin's
     std::string broken_;  // the failure that ended the process; empty while it runs
 };
 

@@ -97,8 +97,9 @@ TEST(PluginEngine, ACrashOrAnExitIsReportedAndRepeated) {
             EXPECT_EQ(std::string(e.what()), expected);
         }
     }
+    // 127 is also what a failed exec of the host gives; after loading, it is the plugin's.
     EXPECT_EQ(failure(misbehaving("exit")), "plugin " + misbehaving("exit") +
-                                                ": exited with status 7 rendering a scene of 1 triangles, 4x3, 1 "
+                                                ": exited with status 127 rendering a scene of 1 triangles, 4x3, 1 "
                                                 "sample(s)");
 }
 
@@ -108,6 +109,14 @@ TEST(PluginEngine, AHangIsStoppedAtTheTimeout) {
               "plugin " + misbehaving("hang") +
                   ": no answer within 0.3 s rendering a scene of 1 triangles, 4x3, 1 sample(s); stopped it "
                   "(--plugin-timeout)");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+}
+
+TEST(PluginEngine, APluginThatClosesItsSocketAndHangsIsStopped) {
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(failure(misbehaving("close_and_hang"), 0.3),
+              "plugin " + misbehaving("close_and_hang") +
+                  ": closed its socket rendering a scene of 1 triangles, 4x3, 1 sample(s) and did not end; stopped it");
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
 }
 

@@ -42,7 +42,10 @@ int rast_plugin_render(const rast_plugin_scene *scene, int32_t *ids, char *err, 
 #elif defined(MISBEHAVE_CRASH)
     if (scene->triangle_count > 0) raise(SIGSEGV);
 #elif defined(MISBEHAVE_EXIT)
-    _exit(7);
+    _exit(127); /* the status a failed exec gives: here it is the plugin's own */
+#elif defined(MISBEHAVE_CLOSE_AND_HANG)
+    close(3); /* the host's socket, as a plugin that closes every descriptor might */
+    for (;;) pause();
 #elif defined(MISBEHAVE_HANG)
     for (;;) pause();
 #elif defined(MISBEHAVE_ID_OUT_OF_RANGE)
