@@ -2,7 +2,7 @@
 // error against the exact reference, hard cases, and the antialiasing error of the sample patterns.
 #include "commands.h"
 #include "output_paths.h"
-#include "shell_word.h"
+#include <rast/shell_word.h>
 
 #include <rast/atomic_file.h>
 #include <rast/bench_run.h>

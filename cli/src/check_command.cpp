@@ -7,7 +7,7 @@
 #include "engine_choice.h"
 #include "output_paths.h"
 #include "scene_input.h"
-#include "shell_word.h"
+#include <rast/shell_word.h>
 
 #include <rast/exact_geometry.h>
 #include <rast/properties.h>

@@ -79,6 +79,14 @@ std::vector<conform::Case> read_cases(const std::vector<fs::path>& paths) {
     return cases;
 }
 
+// The plugin as --engine names it in a kept case's replay command: absolute, so that it replays from
+// anywhere.
+std::string engine_path(const std::string& library) {
+    std::error_code unseen;
+    const fs::path absolute = fs::absolute(library, unseen);
+    return unseen ? library : absolute.string();
+}
+
 int run_conform(const ConformOptions& o) {
     const auto [shard, shards] = parse_shard(o.shard);
     check_output_paths({o.scenes.begin(), o.scenes.end()}, {{"--json", o.json}, {"--markdown", o.markdown}});
@@ -106,7 +114,7 @@ int run_conform(const ConformOptions& o) {
     options.shard = shard;
     options.shards = shards;
     options.found = fs::path(o.found);
-    options.engine_option = "plugin:" + o.library;
+    options.engine_option = "plugin:" + engine_path(o.library);
     std::unique_ptr<ProgressMeter> meter;
     std::string metered;
     options.progress = [&](const std::string& property, std::size_t done, std::size_t total) {
@@ -129,10 +137,21 @@ int run_conform(const ConformOptions& o) {
     }
     meter.reset();
 
-    std::size_t failed = 0;
+    // Pictures and reports are written together at the end. A picture renders the case again: an engine
+    // that fails then costs the picture, not the verdict.
+    std::vector<std::pair<std::string, std::string>> files;
+    std::size_t passed = 0, failed = 0, skipped = 0;
     for (const auto& p : verdict.properties) {
         if (!p.failure) {
-            std::cout << "PASS " << p.property << " (" << p.checked << " scenes)\n";
+            if (p.checked == 0) {
+                ++skipped;
+                std::cout << "SKIP " << p.property << " (no scene it applies to";
+                if (p.not_applicable > 0) std::cout << ": " << p.not_applicable << " outside its precondition here";
+                std::cout << ")\n";
+            } else {
+                ++passed;
+                std::cout << "PASS " << p.property << " (" << p.checked << " scenes)\n";
+            }
             continue;
         }
         ++failed;
@@ -142,18 +161,24 @@ int run_conform(const ConformOptions& o) {
         if (!f.kept.empty()) {
             fs::path picture = f.kept;
             picture.replace_extension(".png");
-            write_file_atomic(picture, counterexample_png(engine, f));
-            std::cout << "\n     kept: " << f.kept.string() << " and " << picture.filename().string()
-                      << " (demanded | engine | reference)";
+            std::cout << "\n     kept: " << f.kept.string();
+            try {
+                files.emplace_back(picture.string(), counterexample_png(engine, f));
+                std::cout << " and " << picture.filename().string() << " (demanded | engine | reference)";
+            } catch (const EngineError& e) {
+                std::cout << " (no picture: " << e.what() << ")";
+            }
         }
         std::cout << '\n';
     }
-    std::cout << verdict.properties.size() - failed << " passed, " << failed << " failed\n";
-    std::vector<std::pair<std::string, std::string>> reports;
-    if (o.json) reports.emplace_back(*o.json, conform_json(run, verdict));
-    if (o.markdown) reports.emplace_back(*o.markdown, conform_markdown(run, verdict));
-    write_files_atomic(std::vector<FileContent>(reports.begin(), reports.end()));
-    for (const auto& report : reports) std::cout << "wrote " << report.first << '\n';
+    std::cout << passed << " passed, " << failed << " failed";
+    if (skipped > 0) std::cout << ", " << skipped << " skipped";
+    std::cout << '\n';
+    if (o.json) files.emplace_back(*o.json, conform_json(run, verdict));
+    if (o.markdown) files.emplace_back(*o.markdown, conform_markdown(run, verdict));
+    write_files_atomic(std::vector<FileContent>(files.begin(), files.end()));
+    if (o.json) std::cout << "wrote " << *o.json << '\n';
+    if (o.markdown) std::cout << "wrote " << *o.markdown << '\n';
     return failed > 0 ? 1 : 0;
 }
 

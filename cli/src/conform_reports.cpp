@@ -14,7 +14,7 @@ namespace rast::cli {
 
 namespace {
 
-const char* status(const conform::PropertyVerdict& p) { return p.failure ? "FAIL" : "PASS"; }
+const char* status(const conform::PropertyVerdict& p) { return p.failure ? "FAIL" : p.checked == 0 ? "SKIP" : "PASS"; }
 
 // Markdown table cells hold no '|' and no line break.
 std::string cell(std::string text) {
@@ -54,8 +54,9 @@ Image demands_image(const Scene& scene, const std::vector<properties::Demand>& d
 
 std::string conform_json(const ConformRun& run, const conform::Verdict& verdict) {
     nlohmann::json properties = nlohmann::json::array();
-    std::size_t failed = 0;
+    std::size_t failed = 0, skipped = 0;
     for (const auto& p : verdict.properties) {
+        skipped += !p.failure && p.checked == 0;
         nlohmann::json entry{{"property", p.property},
                              {"status", status(p)},
                              {"scenes_checked", p.checked},
@@ -75,8 +76,9 @@ std::string conform_json(const ConformRun& run, const conform::Verdict& verdict)
                                 {"contract", verdict.contract ? verdict.contract->text() : ""},
                                 {"battery", run.battery},
                                 {"conforms", verdict.conforms()},
-                                {"passed", verdict.properties.size() - failed},
+                                {"passed", verdict.properties.size() - failed - skipped},
                                 {"failed", failed},
+                                {"skipped", skipped},
                                 {"properties", properties}};
     return report.dump(2) + "\n";
 }

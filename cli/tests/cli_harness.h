@@ -2,7 +2,7 @@
 // directory per test.
 #pragma once
 
-#include "../src/shell_word.h"
+#include <rast/shell_word.h>
 
 #include <gtest/gtest.h>
 

@@ -19,7 +19,7 @@ using rast::cli::testing::rast;
 using rast::cli::testing::slurp;
 using rast::cli::testing::rast_piped;
 using rast::cli::testing::run;
-using rast::cli::shell_word;
+using rast::shell_word;
 
 class Cli : public rast::cli::testing::TempDirTest {};
 

@@ -29,7 +29,8 @@ Outcome verdict(const Property& p, const Scene& scene, const Engine& engine, con
         if (options.found)
             kept = detail::keep_case(*options.found, scene,
                                      {engine.name, "engine-error", e.what(),
-                                      engine.contract ? engine.contract->text() : "", options.engine_option});
+                                      engine.contract ? engine.contract->text() : "", options.engine_option,
+                                      std::string(p.name)});
         throw EngineFailure(e, kept);
     }
 }
@@ -120,10 +121,21 @@ void generate(const Engine& engine, const Property& p, PropertyVerdict& pv, cons
     CaseCounter counter(options, pv.property);
     rc::detail::TestMetadata metadata;
     metadata.id = "rast conform " + pv.property;
+    // RapidCheck takes any exception in a case for a failure of the property, and goes on shrinking. An
+    // engine that failed outright gave no answer to judge: the first such failure is kept and thrown
+    // after the search, which runs on without calling the engine again.
+    std::optional<EngineFailure> engine_failure;
     const auto result = rc::detail::checkTestable(
         [&] {
             const Scene scene = *gen::scenes_for(p.name);
-            const Outcome o = verdict(p, scene, engine, options);
+            if (engine_failure) return;
+            Outcome o;
+            try {
+                o = verdict(p, scene, engine, options);
+            } catch (const EngineFailure& e) {
+                engine_failure = e;
+                return;
+            }
             RC_PRE(o.verdict != Outcome::Verdict::not_applicable);
             if (!o.failed()) return;
             if (!last_failing) original = scene.triangles.size();
@@ -138,6 +150,7 @@ void generate(const Engine& engine, const Property& p, PropertyVerdict& pv, cons
                   : result.match(gave_up) ? static_cast<std::size_t>(gave_up.numSuccess)
                   : result.match(failure) ? static_cast<std::size_t>(failure.numSuccess) + 1
                                           : 0;
+    if (engine_failure) throw *engine_failure;
     if (last_failing)
         pv.failure = finding(p, engine,
                              "generated (seed " + std::to_string(params.seed) + ", shrunk by RapidCheck)", original,

@@ -15,6 +15,9 @@ struct KeptCase {
     std::string why;            // one line
     std::string contract;       // the contract text, or "" for none
     std::string engine_option;  // what --engine says to reproduce it
+    // For an engine-error case, the property that was running: the engine may have failed on a scene
+    // the property made from this one (shifted, reordered, one triangle alone).
+    std::string running = {};
 };
 
 // Writes <folder>/<engine>-<property>-<16 hex digits>.tri atomically: the digits hash the scene's text.

@@ -116,8 +116,10 @@ TEST_F(Conform, AnIndependentEngineConformsAndEachSeededDefectIsCaught) {
     options.cases = 40;
     options.found = found;
     const Verdict careful = battery(plugin_engine(std::string(RAST_TEST_PLUGINS) + "/careful.so"), cases, options);
-    for (const PropertyVerdict& p : careful.properties)
+    for (const PropertyVerdict& p : careful.properties) {
         EXPECT_FALSE(p.failure) << p.property << ": " << p.failure->detail;
+        EXPECT_GE(p.checked, 40u) << p.property;
+    }
     for (const char* defect :
          {"ties_bottom_right", "snap_truncate", "last_wins_tie", "ids_off_by_one", "top_row_unwritten",
           "culls_clockwise"}) {
@@ -129,6 +131,25 @@ TEST_F(Conform, AnIndependentEngineConformsAndEachSeededDefectIsCaught) {
         ASSERT_TRUE(conforms->failure) << defect;
         EXPECT_LE(conforms->failure->scene.triangles.size(), 4u) << defect;
         EXPECT_TRUE(fs::exists(conforms->failure->kept)) << defect;
+    }
+}
+
+// A plugin that crashes on a generated scene ends the battery with the failure, the scene kept: it does
+// not pass for want of an answer.
+TEST_F(Conform, AnEngineThatCrashesOnAGeneratedSceneEndsTheBattery) {
+    const std::string library = std::string(RAST_TEST_PLUGINS) + "/misbehaving-crash.so";
+    Options options;
+    options.cases = 20;
+    options.found = found;
+    try {
+        battery(plugin_engine(library), {}, options);
+        ADD_FAILURE() << "the battery passed a plugin that crashes on every triangle";
+    } catch (const EngineFailure& e) {
+        EXPECT_NE(std::string(e.what()).find("crashed (signal 11"), std::string::npos) << e.what();
+        ASSERT_TRUE(fs::exists(e.kept));
+        const Case kept = read_case(e.kept);
+        EXPECT_FALSE(kept.scene.triangles.empty());
+        EXPECT_EQ(kept.claims.back(), "conforms");
     }
 }
 

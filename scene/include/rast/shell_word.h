@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace rast::cli {
+namespace rast {
 
 inline std::string shell_word(std::string_view word) {
     const auto plain = [](char c) {
@@ -23,4 +23,4 @@ inline std::string shell_word(std::string_view word) {
     return quoted;
 }
 
-}  // namespace rast::cli
+}  // namespace rast
