@@ -41,6 +41,18 @@ TEST_F(PluginCommands, APluginRunsWithAStandardStreamClosed) {
     EXPECT_TRUE(contains(r.out, "covered: 24576 of 24576 samples")) << r.out;
 }
 
+// What a plugin prints on its standard output reaches rast's standard error, never rast's output (a
+// script reading it) and never the socket (the render goes on).
+TEST_F(PluginCommands, WhatAPluginPrintsGoesToStandardError) {
+    const std::string command = std::string(RAST_BINARY) + " render --default --engine plugin:" + misbehaving("prints");
+    const Result out_only = run(command + " 2>/dev/null");
+    EXPECT_EQ(out_only.status, 0) << out_only.out;
+    EXPECT_FALSE(contains(out_only.out, "a plugin that talks on stdout")) << out_only.out;
+    EXPECT_TRUE(contains(out_only.out, "covered: 0 of 24576 samples")) << out_only.out;
+    const Result err_only = run(command + " 2>&1 >/dev/null");
+    EXPECT_TRUE(contains(err_only.out, "a plugin that talks on stdout\n")) << err_only.out;
+}
+
 TEST_F(PluginCommands, APluginThatCrashesEndsTheCommandWithItsReasonAndWritesNothing) {
     const Result r = rast("render --default --engine plugin:" + misbehaving("crash") + " -o " + out("picture.png") +
                           " --ids-out " + out("ids.txt"));

@@ -133,10 +133,5 @@ TEST(PluginEngine, ASampleCountOutsideTheContractIsAnError) {
                   "snap=none ties=top-left depth=zid)");
 }
 
-TEST(PluginEngine, WhatAPluginPrintsStaysOffTheWire) {
-    EXPECT_EQ(failure(misbehaving("prints"), 60, 4), "");
-    EXPECT_EQ(plugin_engine(misbehaving("prints")).render(one_triangle()).ids, std::vector<std::int32_t>(12, -1));
-}
-
 }  // namespace
 }  // namespace rast

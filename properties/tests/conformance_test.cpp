@@ -102,12 +102,17 @@ TEST(Conformance, EachRoundingDecidesTheHalfwayEdge) {
 }
 
 TEST(Conformance, ValuesSharedByTwoVerticesSnapAlike) {
-    // Both ends of the left edge share x: snapped apart, the edge would lean and cross the centre's row
-    // differently; shared, the edge stays vertical, at 0.5 or at 0.5 + 2^-8, and the centre at height 0.5
-    // is free; (1.5, 0.5) is required either way.
-    const Scene s = halfway_edge();
-    const auto demands = coverage_demands(s, contract("snap=8 rounding=any ties=none depth=zid"));
-    EXPECT_EQ(demands, (std::vector<Demand>{Demand::free, Demand::required}));
+    // Two vertices at one point c = (0.5 - 2^-9, 0.5 - 2^-9), halfway between grid points: snapped alike
+    // they stay one point, the triangle has no area and covers nothing. Snapped apart, to (0.5 - 2^-8, 0.5)
+    // and (0.5, 0.5 - 2^-8), they would make a sliver with the centre (0.5, 0.5) strictly inside it.
+    const double c = 0.5 - std::ldexp(1.0, -9);
+    const Scene s{{2, 2}, 1, {tri(c, c, c, c, 1.5, 1.5)}};
+    EXPECT_EQ(coverage_demands(s, contract("snap=8 rounding=any ties=top-left depth=zid")),
+              std::vector<Demand>(4, Demand::forbidden));
+    // The sliver itself, given: the centre is required, whichever way its halfway coordinates go.
+    const double lo = 0.5 - std::ldexp(1.0, -8);
+    const Scene sliver{{2, 2}, 1, {tri(lo, 0.5, 0.5, lo, 1.5, 1.5)}};
+    EXPECT_EQ(coverage_demands(sliver, contract("snap=8 rounding=any ties=top-left depth=zid"))[0], Demand::required);
 }
 
 TEST(Conformance, TheZidOrderIsHeldWhereItIsCertain) {
