@@ -1,8 +1,13 @@
-// rast — a plugin's scene (rast/plugin.h) as a rast::Scene, for the plugins built on rast's own code.
+// rast — what the plugins built on rast's own code do around their work: the ABI's scene as a rast::Scene,
+// and the ids and errors handed back.
 #pragma once
 
 #include <rast/plugin.h>
 #include <rast/scene.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
 
 namespace rast::plugins {
 
@@ -16,6 +21,19 @@ inline Scene scene_of(const rast_plugin_scene& given) {
             v += 3;
         }
     return scene;
+}
+
+// rast_plugin_render's answer: the ids of the framebuffer `render()` makes, or its exception as the error.
+template <class Render>
+int answer(std::int32_t* ids, char* err, std::size_t errlen, Render render) noexcept {
+    try {
+        const Framebuffer fb = render();
+        std::copy(fb.ids.begin(), fb.ids.end(), ids);
+        return 0;
+    } catch (const std::exception& e) {
+        std::snprintf(err, errlen, "%s", e.what());
+        return 1;
+    }
 }
 
 }  // namespace rast::plugins

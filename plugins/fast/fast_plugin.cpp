@@ -6,9 +6,6 @@
 #include <rast/fast.h>
 #include <rast/plugin.h>
 
-#include <algorithm>
-#include <cstdio>
-#include <exception>
 #include <string>
 
 #include "../abi_scene.h"
@@ -42,17 +39,12 @@ const char* rast_plugin_contract(void) {
 }
 
 int rast_plugin_render(const rast_plugin_scene* scene, int32_t* ids, char* err, size_t errlen) {
-    try {
-        const rast::Scene s = rast::plugins::scene_of(*scene);
+    return rast::plugins::answer(ids, err, errlen, [scene] {
         static rast::fast::Renderer renderer;  // the host renders one scene at a time
         rast::Framebuffer fb;
-        renderer.render(s, fb, {kPrecision, 1});
-        std::copy(fb.ids.begin(), fb.ids.end(), ids);
-        return 0;
-    } catch (const std::exception& e) {
-        std::snprintf(err, errlen, "%s", e.what());
-        return 1;
-    }
+        renderer.render(rast::plugins::scene_of(*scene), fb, {kPrecision, 1});
+        return fb;
+    });
 }
 
 }  // extern "C"

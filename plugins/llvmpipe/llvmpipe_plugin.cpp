@@ -13,8 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <exception>
 #include <limits>
 #include <memory>
 
@@ -33,7 +31,7 @@ int rast_plugin_abi_version(void) { return RAST_PLUGIN_ABI_VERSION; }
 const char* rast_plugin_contract(void) { return "name=llvmpipe samples=1 snap=8 rounding=any ties=top-left depth=none"; }
 
 int rast_plugin_render(const rast_plugin_scene* scene, int32_t* ids, char* err, size_t errlen) {
-    try {
+    return rast::plugins::answer(ids, err, errlen, [scene] {
         static const auto llvmpipe = std::make_unique<rast::peer::Llvmpipe>(0);
         rast::Scene s = rast::plugins::scene_of(*scene);
         for (rast::Triangle& t : s.triangles) {
@@ -44,13 +42,8 @@ int rast_plugin_render(const rast_plugin_scene* scene, int32_t* ids, char* err, 
         }
         llvmpipe->load(s);
         llvmpipe->draw();
-        const rast::Framebuffer fb = llvmpipe->read_ids();
-        std::copy(fb.ids.begin(), fb.ids.end(), ids);
-        return 0;
-    } catch (const std::exception& e) {
-        std::snprintf(err, errlen, "%s", e.what());
-        return 1;
-    }
+        return llvmpipe->read_ids();
+    });
 }
 
 }  // extern "C"
