@@ -6,8 +6,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <unistd.h>
-
 #include <charconv>
 #include <filesystem>
 #include <iostream>
@@ -119,8 +117,7 @@ int run_conform(const ConformOptions& o) {
     std::string metered;
     options.progress = [&](const std::string& property, std::size_t done, std::size_t total) {
         if (!meter || property != metered) {
-            meter = std::make_unique<ProgressMeter>("conform " + property, "cases", std::cerr,
-                                                    isatty(STDERR_FILENO) == 1);
+            meter = stderr_meter("conform " + property, "cases");
             metered = property;
         }
         meter->update(done, total);

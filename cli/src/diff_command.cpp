@@ -65,8 +65,8 @@ void run_diff(const DiffOptions& o) {
     }
     const Engine engine = o.engine.make();
     note_unbounded_triangles(scene, engine);
-    ProgressMeter meter = stderr_meter("reference render", "triangles");
-    const Framebuffer exact = reference_engine(nullptr, meter.progress()).render(scene);
+    const auto meter = stderr_meter("reference render", "triangles");
+    const Framebuffer exact = reference_engine(nullptr, meter->progress()).render(scene);
     const Framebuffer fast = engine.render(scene);
 
     std::size_t samples = 0, pixels = 0;

@@ -60,8 +60,8 @@ void ProgressMeter::show(std::size_t done, std::size_t total, double now, bool l
     shown_at_ = now;
 }
 
-ProgressMeter stderr_meter(std::string label, std::string unit) {
-    return ProgressMeter(std::move(label), std::move(unit), std::cerr, isatty(STDERR_FILENO) == 1);
+std::unique_ptr<ProgressMeter> stderr_meter(std::string label, std::string unit) {
+    return std::make_unique<ProgressMeter>(std::move(label), std::move(unit), std::cerr, isatty(STDERR_FILENO) == 1);
 }
 
 }  // namespace rast::cli

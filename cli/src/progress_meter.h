@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 
@@ -44,7 +45,7 @@ private:
     bool spoken_ = false, line_open_ = false;
 };
 
-// The meter for this process's stderr, rewriting its line when stderr is a terminal.
-ProgressMeter stderr_meter(std::string label, std::string unit);
+// A meter on this process's stderr, rewriting its line when stderr is a terminal.
+std::unique_ptr<ProgressMeter> stderr_meter(std::string label, std::string unit);
 
 }  // namespace rast::cli

@@ -114,8 +114,8 @@ void run_render(const RenderOptions& o) {
     }
 
     reference::Stats stats;
-    ProgressMeter meter = stderr_meter("reference render", "triangles");
-    const Engine engine = o.engine.make(&stats, meter.progress());
+    const auto meter = stderr_meter("reference render", "triangles");
+    const Engine engine = o.engine.make(&stats, meter->progress());
     note_unbounded_triangles(scene, engine);
     const auto start = std::chrono::steady_clock::now();
     const Framebuffer fb = engine.render(scene);
@@ -140,8 +140,8 @@ void run_render(const RenderOptions& o) {
     }
 
     const bool want_area = o.coverage == "area" || o.coverage_out;
-    ProgressMeter area_meter = stderr_meter("exact area", "triangles");
-    const auto area = want_area ? reference::coverage_area(scene, area_meter.progress())
+    const auto area_meter = stderr_meter("exact area", "triangles");
+    const auto area = want_area ? reference::coverage_area(scene, area_meter->progress())
                                 : std::vector<reference::Rational>{};
     // Every file's bytes first, so that nothing is written unless all of them could be made.
     std::vector<std::pair<std::string, std::string>> files;

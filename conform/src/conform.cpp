@@ -58,32 +58,6 @@ bool claims(const Case& c, const Property& p) {
     return p.name == "conforms" || std::find(c.claims.begin(), c.claims.end(), p.name) != c.claims.end();
 }
 
-// The given cases, on each property until its first failure.
-Verdict judge_cases(const Engine& engine, std::span<const Case> cases, const Options& options) {
-    Verdict v{engine.name, engine.contract, {}};
-    for (const Property* p : implied_properties(engine)) {
-        PropertyVerdict pv{std::string(p->name), 0, 0, std::nullopt};
-        std::size_t done = 0;
-        for (const Case& c : cases) {
-            if (options.progress) options.progress(pv.property, done++, cases.size());
-            if (!claims(c, *p)) continue;
-            const Outcome o = verdict(*p, c.scene, engine, options);
-            if (o.verdict == Outcome::Verdict::not_applicable) {
-                ++pv.not_applicable;
-                continue;
-            }
-            ++pv.checked;
-            if (o.failed()) {
-                pv.failure = finding(*p, engine, c.origin, c.scene.triangles.size(), c.scene, options);
-                break;
-            }
-        }
-        if (options.progress) options.progress(pv.property, cases.size(), cases.size());
-        v.properties.push_back(std::move(pv));
-    }
-    return v;
-}
-
 // RapidCheck announces its global configuration (a random seed) on std::cerr when it first loads it. The
 // battery sets every parameter itself, so that line would only mislead: it is loaded here, unheard.
 void load_rapidcheck_quietly() {
@@ -185,12 +159,33 @@ std::vector<const Property*> implied_properties(const Engine& engine) {
 }
 
 Verdict judge(const Engine& engine, std::span<const Case> cases, const Options& options) {
-    return judge_cases(engine, cases, options);
+    Verdict v{engine.name, engine.contract, {}};
+    for (const Property* p : implied_properties(engine)) {
+        PropertyVerdict pv{std::string(p->name), 0, 0, std::nullopt};
+        std::size_t done = 0;
+        for (const Case& c : cases) {
+            if (options.progress) options.progress(pv.property, done++, cases.size());
+            if (!claims(c, *p)) continue;
+            const Outcome o = verdict(*p, c.scene, engine, options);
+            if (o.verdict == Outcome::Verdict::not_applicable) {
+                ++pv.not_applicable;
+                continue;
+            }
+            ++pv.checked;
+            if (o.failed()) {
+                pv.failure = finding(*p, engine, c.origin, c.scene.triangles.size(), c.scene, options);
+                break;
+            }
+        }
+        if (options.progress) options.progress(pv.property, cases.size(), cases.size());
+        v.properties.push_back(std::move(pv));
+    }
+    return v;
 }
 
 Verdict battery(const Engine& engine, std::span<const Case> corpus, const Options& options) {
     load_rapidcheck_quietly();
-    Verdict v = judge_cases(engine, corpus, options);
+    Verdict v = judge(engine, corpus, options);
     for (std::size_t k = 0; k < v.properties.size(); ++k) {
         PropertyVerdict& pv = v.properties[k];
         if (pv.failure || options.cases <= 0) continue;

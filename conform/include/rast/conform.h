@@ -71,7 +71,7 @@ struct Options {
 };
 
 // Every implied property on every case: conforms on all of them, another property on the cases that
-// claim it. No generated cases.
+// claim it, each property until its first failure. No generated cases.
 Verdict judge(const Engine& engine, std::span<const Case> cases, const Options& options);
 
 // The battery: `corpus` first, then options.cases generated scenes per implied property.
