@@ -1,0 +1,45 @@
+// rast — the exact visible area: the ideal antialiased image of a z-buffered scene.
+//
+// In each pixel square, the area where each triangle is the z-buffer's winner under the (z, id) order of
+// docs/design.md, z the triangle's plane: triangles that interpenetrate split a pixel along the line where
+// their planes meet, and coplanar overlaps go to the lower id. Boundaries have no area, so the tie rule
+// plays no part. This is what supersampling a z-buffer approximates: the box-filtered visible image.
+#pragma once
+
+#include <rast/progress.h>
+#include <rast/reference.h>
+#include <rast/scene.h>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace rast::reference {
+
+// One triangle's visible area in one pixel.
+struct VisiblePiece {
+    std::size_t id;
+    Rational area;
+    bool operator==(const VisiblePiece&) const = default;
+};
+
+class VisibleArea {
+public:
+    VisibleArea(Viewport viewport, std::vector<std::size_t> first, std::vector<VisiblePiece> pieces);
+
+    Viewport viewport() const { return viewport_; }
+    // The visible triangles of pixel (i, j), ids ascending, each with a non-zero area; their areas sum
+    // to the area of the union of the triangles inside the pixel.
+    std::span<const VisiblePiece> at(int i, int j) const;
+
+private:
+    Viewport viewport_;
+    std::vector<std::size_t> first_;  // pixel p's pieces are [first_[p], first_[p + 1]), bottom row first
+    std::vector<VisiblePiece> pieces_;
+};
+
+// `threads` 0 takes every core; rows are shared out among them. `progress` counts pixel rows (from any
+// of those threads, one call at a time).
+VisibleArea visible_area(const Scene& scene, const Progress& progress = {}, unsigned threads = 0);
+
+}  // namespace rast::reference
