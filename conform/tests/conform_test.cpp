@@ -78,7 +78,7 @@ TEST_F(Conform, TheFixedPathPluginsConformOnTheCorpusAndGeneratedCases) {
         EXPECT_EQ(judged, (std::set<std::string>{"watertight", "tie_rule", "winding_invariance",
                                                  "translation_invariance", "order_independence",
                                                  "fixed_matches_reference", "msaa_counts", "area_tiling",
-                                                 "conforms"}))
+                                                 "conforms", "msaa_visible_bound"}))
             << name;
     }
     EXPECT_FALSE(fs::exists(found));  // nothing to keep

@@ -346,6 +346,45 @@ rc::Gen<Scene> overlapping_triangles() {
     }));
 }
 
+rc::Gen<Scene> layered_triangles() {
+    return scenes_at_full_size(rc::gen::exec([] {
+        const Viewport vp{*rc::gen::inRange(1, 4), *rc::gen::inRange(1, 4)};
+        std::vector<std::array<double, 3>> planes;
+        for (int p = *rc::gen::inRange(2, 5); p > 0; --p)
+            planes.push_back({*on_grid(-1, 1, 3), *on_grid(-1, 1, 3), *on_grid(-2, 2, 2)});
+        std::vector<Triangle> triangles;
+        for (int k = *rc::gen::inRange(1, 6); k > 0; --k) {
+            Triangle t;
+            if (*rc::gen::inRange(0, 3) > 0) {
+                // Its corners far enough out that it holds the viewport whole.
+                t = {{Vertex{-2, -2, 0}, Vertex{3.0 * vp.width + 4, -2, 0}, Vertex{-2, 3.0 * vp.height + 4, 0}}};
+                std::rotate(t.v.begin(), t.v.begin() + *rc::gen::inRange(0, 3), t.v.end());
+            } else {
+                t = ordinary(vp);
+            }
+            const auto& [a, b, c] = *rc::gen::elementOf(planes);
+            for (Vertex& v : t.v) v.z = a * v.x + b * v.y + c;
+            triangles.push_back(t);
+        }
+        return scene_of(vp, std::move(triangles));
+    }));
+}
+
+rc::Gen<Scene> small_window(rc::Gen<Scene> scenes) {
+    return rc::gen::exec([scenes] {
+        Scene s = *scenes;
+        const int w = std::min(s.viewport.width, 4), h = std::min(s.viewport.height, 4);
+        const int di = *rc::gen::inRange(0, s.viewport.width - w + 1), dj = *rc::gen::inRange(0, s.viewport.height - h + 1);
+        for (Triangle& t : s.triangles)
+            for (Vertex& v : t.v) {
+                v.x -= di;
+                v.y -= dj;
+            }
+        s.viewport = {w, h};
+        return s;
+    });
+}
+
 rc::Gen<Scene> any_scene() {
     return rc::gen::oneOf(loose_triangles(), triangulated_region(), overlapping_triangles());
 }

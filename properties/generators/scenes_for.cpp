@@ -20,6 +20,9 @@ rc::Gen<Scene> scenes_for(std::string_view property) {
             p.first.samples = p.second;
             return p.first;
         });
+    if (property == "visible_area" || property == "msaa_visible_bound")
+        return small_window(rc::gen::weightedOneOf<Scene>(
+            {{2, layered_triangles()}, {2, overlapping_triangles()}, {1, triangulated_region()}, {1, loose_triangles()}}));
     properties::property(property);  // throws for a name that is not a property
     return any_scene();
 }

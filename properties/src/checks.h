@@ -3,8 +3,10 @@
 #pragma once
 
 #include <rast/properties.h>
+#include <rast/visible_area.h>
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +23,10 @@ Outcome float_within_bound(const Scene& scene, const Engine& engine);
 Outcome msaa_counts(const Scene& scene, const Engine& engine);
 Outcome area_tiling(const Scene& scene, const Engine& engine);
 Outcome conforms(const Scene& scene, const Engine& engine);
+Outcome visible_area(const Scene& scene, const Engine& engine);
+// What visible_area concludes of `computed`: the reference's visible area, or a broken one in the bite tests.
+Outcome visible_area_of(const Scene& scene, const std::function<reference::VisibleArea(const Scene&)>& computed);
+Outcome msaa_visible_bound(const Scene& scene, const Engine& engine);
 
 // Not applicable, naming the first triangle that snapping to the engine's grid turns over (or gives area
 // it did not have), where `geometry` (rasterized_geometry) has one: the snapped scene is then no longer

@@ -16,6 +16,8 @@ bool exact_engines(const Engine& e) { return e.exact(); }
 bool contract_engines(const Engine& e) { return e.contract.has_value(); }
 bool fixed_engines(const Engine& e) { return e.exact() && e.snap_bits().has_value(); }
 bool float_engines(const Engine& e) { return e.edge_error_bound_at && !e.exact(); }
+bool reference_only(const Engine& e) { return e.is_reference(); }
+bool exact_zid_engines(const Engine& e) { return e.exact() && keeps_zid(e); }
 
 // Float modes are bound only by float_within_bound: near an edge they may classify either way, so
 // exact coverage claims (shared edges, ties, translations) are not theirs to keep.
@@ -36,6 +38,10 @@ constexpr Property kProperties[] = {
      area_tiling},
     {"conforms", "every sample is as the engine's contract demands: required ones covered, forbidden ones not, "
      "ids in the (z, id) order", contract_engines, conforms},
+    {"visible_area", "the exact visible area per pixel equals an independent slab computation and sums to the "
+     "union's area", reference_only, visible_area},
+    {"msaa_visible_bound", "the resolved samples are within (cells a boundary meets) / N of the visible area",
+     exact_zid_engines, msaa_visible_bound},
 };
 
 }  // namespace

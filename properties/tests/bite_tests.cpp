@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "checks.h"
 #include "property_harness.h"
 
 namespace {
@@ -171,15 +173,53 @@ const Bite kBites[] = {
     {"depth_less_equal_conforms", Fault::depth_less_equal, Wrapper::none, Precision::fixed8, "conforms"},
     {"bbox_one_short_conforms", Fault::bbox_one_short, Wrapper::none, Precision::fixed16, "conforms"},
     {"snap_by_truncation_conforms", Fault::none, Wrapper::snap_by_truncation, Precision::fixed8, "conforms"},
+    {"no_id_tiebreak_msaa_visible_bound", Fault::no_id_tiebreak, Wrapper::none, Precision::fixed8,
+     "msaa_visible_bound"},
+    {"bbox_one_short_msaa_visible_bound", Fault::bbox_one_short, Wrapper::none, Precision::fixed16,
+     "msaa_visible_bound"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Faults, Bites, ::testing::ValuesIn(kBites),
                          [](const ::testing::TestParamInfo<Bite>& info) { return std::string(info.param.name); });
 
+// A careless visible area: coplanar overlaps go to the higher id (the scene reversed, ids mapped back).
+rast::reference::VisibleArea ties_to_the_higher_id(const Scene& s) {
+    Scene reversed = s;
+    std::reverse(reversed.triangles.begin(), reversed.triangles.end());
+    const auto visible = rast::reference::visible_area(reversed);
+    const std::size_t last = s.triangles.size() - 1;
+    std::vector<std::size_t> first{0};
+    std::vector<rast::reference::VisiblePiece> pieces;
+    for (int j = 0; j < s.viewport.height; ++j)
+        for (int i = 0; i < s.viewport.width; ++i) {
+            const auto at = visible.at(i, j);
+            for (auto p = at.rbegin(); p != at.rend(); ++p) pieces.push_back({last - p->id, p->area});
+            first.push_back(pieces.size());
+        }
+    return {s.viewport, std::move(first), std::move(pieces)};
+}
+
+// visible_area judges the reference's own visible area, not an engine: it bites a broken one.
+TEST(Bites, VisibleAreaCatchesTiesToTheHigherId) {
+    rc::detail::TestMetadata metadata;
+    metadata.id = "Bites/visible_area_ties_to_the_higher_id";
+    rc::detail::TestParams params;
+    params.seed = 20261121;
+    params.maxSuccess = 300;
+    const auto result = rc::detail::checkTestable(
+        [] {
+            const Scene scene = *rast::gen::scenes_for("visible_area");
+            const auto outcome = rast::properties::visible_area_of(scene, ties_to_the_higher_id);
+            RC_ASSERT(!outcome.failed());
+        },
+        metadata, params);
+    EXPECT_TRUE(result.is<rc::detail::FailureResult>());
+}
+
 // Every property is bitten by at least one broken variant above.
 TEST(Bites, EveryPropertyIsBitten) {
     for (const auto& p : rast::properties::all_properties()) {
-        bool bitten = false;
+        bool bitten = p.name == "visible_area";  // by the test above
         for (const Bite& b : kBites) bitten = bitten || p.name == b.property;
         EXPECT_TRUE(bitten) << p.name;
     }

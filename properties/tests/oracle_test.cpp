@@ -2,10 +2,12 @@
 // out by hand.
 #include <rast/exact_geometry.h>
 #include <rast/properties.h>
+#include <rast/visible_oracle.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -122,6 +124,68 @@ TEST(PropertyLibrary, TranslationNeedsExactShifts) {
 TEST(PropertyLibrary, UnknownPropertyIsAnError) {
     EXPECT_THROW(property("watertite"), std::invalid_argument);
     EXPECT_THROW(check_case(kSplitSquare, std::vector<std::string>{"tie_rule", "nope"}), std::invalid_argument);
+}
+
+// The judge of the visible area on the reference's hand cases: z = x and z = y / 2 meet along x = y / 2,
+// the first nearer left of it. That line runs from (0, 0) to (1/2, 1): of the 2 x 2 cells it meets both
+// left ones and touches the top right one at its corner; the triangles' edges are far outside.
+TEST(VisibleOracle, CrossingPlanesBySlabs) {
+    const auto on = [](double a, double b) {
+        Triangle t{{Vertex{-4, -4, 0}, Vertex{8, -4, 0}, Vertex{-4, 8, 0}}};
+        for (Vertex& v : t.v) v.z = a * v.x + b * v.y;
+        return t;
+    };
+    const Scene s{{1, 1}, 1, {on(1, 0), on(0, 0.5)}};
+    const SlabPixel p = visible_by_slabs(s, 0, 0);
+    EXPECT_EQ(p.visible, (std::vector<std::pair<std::size_t, Rational>>{{0, Rational(1, 4)}, {1, Rational(3, 4)}}));
+    EXPECT_EQ(p.covered, 1);
+    EXPECT_EQ(cells_met_by_boundaries(s, 0, 0, 2, 2), 3);
+    EXPECT_EQ(cells_met_by_boundaries(s, 0, 0, 1, 1), 1);
+    EXPECT_FALSE(front_cover(s, 0, 0));  // each is nearer somewhere
+    // z = y / 4 is nearer wherever y > 0; the tie along y = 0 has no area.
+    const Scene behind{{1, 1}, 1, {on(0, 0.5), on(0, 0.25)}};
+    EXPECT_EQ(front_cover(behind, 0, 0), std::optional<std::size_t>(1));
+}
+
+// A half-pixel triangle over a larger one at equal depth, the lower id first: the overlap is the lower
+// id's; the edge x + y = 1 meets 3 of the 2 x 2 cells (through the centre, touching the corner two).
+TEST(VisibleOracle, CoplanarOverlapAndItsEdge) {
+    const Scene s{{1, 1}, 1, {tri(0, 0, 1, 0, 0, 1), tri(-4, -4, 8, -4, -4, 8)}};
+    EXPECT_EQ(visible_by_slabs(s, 0, 0).visible,
+              (std::vector<std::pair<std::size_t, Rational>>{{0, Rational(1, 2)}, {1, Rational(1, 2)}}));
+    EXPECT_EQ(cells_met_by_boundaries(s, 0, 0, 2, 2), 4);
+}
+
+// The cell grid gives every sample of each pattern a closed cell of its own: a perfect matching of
+// samples to the cells that hold them exists (found by augmenting paths).
+TEST(VisibleOracle, EverySampleHasACellOfItsOwn) {
+    for (const int n : {1, 4, 8, 16}) {
+        const auto [columns, rows] = sample_cells(n);
+        ASSERT_EQ(columns * rows, n);
+        const auto pattern = rast::sample_pattern(n);
+        const auto holds = [&](int cell, int s) {
+            const double x = pattern[s].x * columns, y = pattern[s].y * rows;
+            const int c = cell % columns, r = cell / columns;
+            return c <= x && x <= c + 1 && r <= y && y <= r + 1;
+        };
+        std::vector<int> sample_in(static_cast<std::size_t>(n), -1);  // cell -> its sample
+        std::function<bool(int, std::vector<bool>&)> place = [&](int s, std::vector<bool>& seen) {
+            for (int cell = 0; cell < n; ++cell) {
+                if (!holds(cell, s) || seen[cell]) continue;
+                seen[cell] = true;
+                if (sample_in[cell] < 0 || place(sample_in[cell], seen)) {
+                    sample_in[cell] = s;
+                    return true;
+                }
+            }
+            return false;
+        };
+        for (int s = 0; s < n; ++s) {
+            std::vector<bool> seen(static_cast<std::size_t>(n));
+            EXPECT_TRUE(place(s, seen)) << n << " samples: sample " << s << " finds no cell of its own";
+        }
+    }
+    EXPECT_THROW(sample_cells(2), std::invalid_argument);
 }
 
 }  // namespace

@@ -41,12 +41,15 @@ RAST_PROPERTY(float_within_bound)
 RAST_PROPERTY(msaa_counts)
 RAST_PROPERTY(area_tiling)
 RAST_PROPERTY(conforms)
+RAST_PROPERTY(visible_area)
+RAST_PROPERTY(msaa_visible_bound)
 
 // Every registered property has its test above.
 TEST(Properties, EveryPropertyIsTested) {
     const std::vector<std::string> tested{"watertight", "tie_rule", "winding_invariance", "translation_invariance",
                                           "order_independence", "fixed_matches_reference", "float_within_bound",
-                                          "msaa_counts", "area_tiling", "conforms"};
+                                          "msaa_counts", "area_tiling", "conforms", "visible_area",
+                                          "msaa_visible_bound"};
     std::vector<std::string> registered;
     for (const auto& p : rast::properties::all_properties()) registered.emplace_back(p.name);
     EXPECT_EQ(registered, tested);

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -30,6 +31,22 @@ VisibleArea::VisibleArea(Viewport viewport, std::vector<std::size_t> first, std:
 std::span<const VisiblePiece> VisibleArea::at(int i, int j) const {
     const std::size_t p = static_cast<std::size_t>(j) * static_cast<std::size_t>(viewport_.width) + static_cast<std::size_t>(i);
     return std::span(pieces_).subspan(first_[p], first_[p + 1] - first_[p]);
+}
+
+Rational resolve_error(std::span<const VisiblePiece> visible, std::span<const std::int32_t> sample_ids) {
+    // Owner -> its sample fraction minus its area.
+    std::map<std::int64_t, Rational> difference;
+    Rational nothing(1);
+    for (const VisiblePiece& p : visible) {
+        difference[static_cast<std::int64_t>(p.id)] -= p.area;
+        nothing -= p.area;
+    }
+    difference[-1] -= nothing;
+    const Rational share(1, static_cast<long>(sample_ids.size()));
+    for (const std::int32_t id : sample_ids) difference[id] += share;
+    Rational variation(0);
+    for (const auto& [owner, d] : difference) variation += abs(d);
+    return variation / 2;
 }
 
 namespace {

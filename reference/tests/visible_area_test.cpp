@@ -83,6 +83,17 @@ TEST(VisibleArea, CrossingInsideAPartialOverlap) {
     EXPECT_EQ(pixel(s), (Pieces{{0, Rational(1, 4)}, {1, Rational(3, 4)}}));
 }
 
+// Worked by hand: areas 1/4 (id 0) and 1/2 (id 1), nothing 1/4. Samples 0, 0, 1, -1: fractions 1/2, 1/4,
+// 1/4; differences 1/4, -1/4, 0; half their sum is 1/4. Samples matching the areas' proportions differ
+// by nothing, and a sample of an id that sees nothing there counts fully.
+TEST(VisibleArea, ResolveErrorIsTheTotalVariation) {
+    const Pieces areas{{0, Rational(1, 4)}, {1, Rational(1, 2)}};
+    EXPECT_EQ(resolve_error(areas, std::vector<std::int32_t>{0, 0, 1, -1}), Rational(1, 4));
+    EXPECT_EQ(resolve_error(areas, std::vector<std::int32_t>{0, 1, 1, -1}), 0);
+    EXPECT_EQ(resolve_error(Pieces{}, std::vector<std::int32_t>{7}), 1);
+    EXPECT_EQ(resolve_error(Pieces{{3, Rational(1)}}, std::vector<std::int32_t>{-1, 3}), Rational(1, 2));
+}
+
 // Several pixels, rows on several threads: every thread count gives the same areas, the progress counts
 // rows from 0 to the last, one call at a time.
 TEST(VisibleArea, ThreadsAndProgress) {

@@ -57,7 +57,8 @@ struct Property {
 };
 
 // Every property, in a fixed order: watertight, tie_rule, winding_invariance, translation_invariance,
-// order_independence, fixed_matches_reference, float_within_bound, msaa_counts, area_tiling, conforms.
+// order_independence, fixed_matches_reference, float_within_bound, msaa_counts, area_tiling, conforms,
+// visible_area, msaa_visible_bound.
 std::span<const Property> all_properties();
 // Throws std::invalid_argument naming the unknown property and the known ones.
 const Property& property(std::string_view name);

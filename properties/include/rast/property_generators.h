@@ -59,6 +59,14 @@ rc::Gen<Scene> triangulated_region_on_grid(int bits);
 // planes; often sharing vertices, always with depth ties somewhere likely.
 rc::Gen<Scene> overlapping_triangles();
 
+// Layers: large triangles over the whole viewport on crossing planes (dyadic, so ties are exact), with a
+// few small triangles among them, on the same planes or their own.
+rc::Gen<Scene> layered_triangles();
+
+// A window of at most 4 x 4 pixels anywhere in a scene of `scenes`, the triangles moved by whole pixels:
+// the judge of the visible area cuts each pixel at every crossing of its lines, so its scenes stay small.
+rc::Gen<Scene> small_window(rc::Gen<Scene> scenes);
+
 // One of all of the above.
 rc::Gen<Scene> any_scene();
 

@@ -11,6 +11,7 @@
 #include <rast/scene.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -37,6 +38,12 @@ private:
     std::vector<std::size_t> first_;  // pixel p's pieces are [first_[p], first_[p + 1]), bottom row first
     std::vector<VisiblePiece> pieces_;
 };
+
+// How far a pixel's samples are from its visible areas: the total variation distance between the
+// fraction of the samples each owner holds (`sample_ids`, -1 for none) and the area it sees (nothing seen
+// owning what is left). It is the largest error the resolved colour of the pixel can have, when colours
+// lie in [0, 1]: the average over samples against the average over the area.
+Rational resolve_error(std::span<const VisiblePiece> visible, std::span<const std::int32_t> sample_ids);
 
 // `threads` 0 takes every core; rows are shared out among them. `progress` counts pixel rows (from any
 // of those threads, one call at a time).
