@@ -36,4 +36,34 @@ std::string format_depth(const Framebuffer& fb) {
     });
 }
 
+std::string format_area(Viewport vp, const std::vector<reference::Rational>& area) {
+    std::string out;
+    for (int j = vp.height - 1; j >= 0; --j) {
+        for (int i = 0; i < vp.width; ++i) {
+            if (i > 0) out += ' ';
+            out += area[std::size_t(j) * vp.width + i].str();
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+std::string format_visible(const reference::VisibleArea& visible) {
+    const Viewport vp = visible.viewport();
+    std::string out;
+    for (int j = vp.height - 1; j >= 0; --j) {
+        for (int i = 0; i < vp.width; ++i) {
+            if (i > 0) out += ' ';
+            const auto pieces = visible.at(i, j);
+            if (pieces.empty()) out += '-';
+            for (std::size_t k = 0; k < pieces.size(); ++k) {
+                if (k > 0) out += ',';
+                out += std::to_string(pieces[k].id) + ':' + pieces[k].area.str();
+            }
+        }
+        out += '\n';
+    }
+    return out;
+}
+
 }  // namespace rast::cli

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -49,6 +50,40 @@ Image resolve_ids(const Framebuffer& fb) {
                 out[k] = static_cast<std::uint8_t>((sum[k] + fb.samples / 2) / fb.samples);
         }
     }
+    return image;
+}
+
+Image visible_image(const reference::VisibleArea& visible) {
+    const Viewport vp = visible.viewport();
+    Image image(vp.width, vp.height);
+    const auto background = id_colour(Framebuffer::kNoTriangle);
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i) {
+            std::array<double, 3> sum{};
+            double seen = 0;
+            for (const auto& p : visible.at(i, j)) {
+                const double a = p.area.convert_to<double>();
+                const auto c = id_colour(static_cast<std::int32_t>(p.id));
+                for (int k = 0; k < 3; ++k) sum[k] += a * c[k];
+                seen += a;
+            }
+            std::uint8_t* out = image.at(i, vp.height - 1 - j);
+            for (int k = 0; k < 3; ++k)
+                out[k] = static_cast<std::uint8_t>(std::clamp(sum[k] + (1 - seen) * background[k] + 0.5, 0.0, 255.0));
+        }
+    return image;
+}
+
+Image resolve_error_image(const reference::VisibleArea& visible, const Framebuffer& fb) {
+    const Viewport vp = fb.viewport;
+    Image image(vp.width, vp.height);
+    for (int j = 0; j < vp.height; ++j)
+        for (int i = 0; i < vp.width; ++i) {
+            const auto ids = std::span(fb.ids).subspan(fb.index(i, j, 0), static_cast<std::size_t>(fb.samples));
+            const double error = reference::resolve_error(visible.at(i, j), ids).convert_to<double>();
+            std::uint8_t* out = image.at(i, vp.height - 1 - j);
+            std::fill(out, out + 3, static_cast<std::uint8_t>(std::sqrt(error) * 255 + 0.5));
+        }
     return image;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <rast/scene.h>
+#include <rast/visible_area.h>
 
 #include <array>
 #include <cstdint>
@@ -26,6 +27,14 @@ std::array<std::uint8_t, 3> id_colour(std::int32_t id);
 // The framebuffer as a picture: each pixel the average of its samples' id colours, rows flipped so the
 // top row (j = H - 1) comes first.
 Image resolve_ids(const Framebuffer& fb);
+
+// The ideal antialiased picture: each pixel the id colours weighted by the exact visible areas, the
+// background's colour where nothing is seen.
+Image visible_image(const reference::VisibleArea& visible);
+
+// How far each resolved pixel of `fb` is from the visible ideal (reference::resolve_error, in [0, 1]) as a
+// grey on a square-root scale: 0 black, 1/16 a quarter, 1/4 half, 1 white.
+Image resolve_error_image(const reference::VisibleArea& visible, const Framebuffer& fb);
 
 // Equally sized panels left to right, each magnified by `scale` (nearest neighbour, so single pixels stay
 // sharp), with a grey separator `scale` pixels wide between them. One panel: just the magnification.

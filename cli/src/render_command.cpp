@@ -10,6 +10,7 @@
 
 #include <rast/atomic_file.h>
 #include <rast/reference.h>
+#include <rast/visible_area.h>
 
 #include <CLI/CLI.hpp>
 
@@ -31,6 +32,8 @@
 namespace rast::cli {
 namespace {
 
+constexpr int kErrorSampleCounts[] = {1, 4, 8, 16};
+
 struct RenderOptions {
     SceneInput input;
     bool use_default = false;
@@ -38,7 +41,7 @@ struct RenderOptions {
     std::optional<std::string> image_out;
     int magnify = 1;
     std::string coverage = "samples";
-    std::optional<std::string> ids_out, depth_out, coverage_out;
+    std::optional<std::string> ids_out, depth_out, coverage_out, visible_out;
 };
 
 std::string percent(std::uint64_t part, std::uint64_t whole) {
@@ -81,19 +84,6 @@ Image depth_image(const Framebuffer& fb) {
     return image;
 }
 
-// docs/design.md: p/q in lowest terms, an integer when q = 1, top row first.
-std::string format_area(Viewport vp, const std::vector<reference::Rational>& area) {
-    std::string out;
-    for (int j = vp.height - 1; j >= 0; --j) {
-        for (int i = 0; i < vp.width; ++i) {
-            if (i > 0) out += ' ';
-            out += area[std::size_t(j) * vp.width + i].str();
-        }
-        out += '\n';
-    }
-    return out;
-}
-
 void run_render(const RenderOptions& o) {
     if (o.engine.plugin() && (o.depth_out || (o.image_out && o.coverage == "depth")))
         throw std::invalid_argument(std::string(o.depth_out ? "--depth-out" : "--coverage depth") +
@@ -101,12 +91,14 @@ void run_render(const RenderOptions& o) {
     std::vector<std::filesystem::path> inputs;
     if (!o.use_default) inputs.push_back(o.input.path);
     check_output_paths(inputs, {{"-o", o.image_out}, {"--ids-out", o.ids_out}, {"--depth-out", o.depth_out},
-                                {"--coverage-out", o.coverage_out}});
+                                {"--coverage-out", o.coverage_out}, {"--visible-out", o.visible_out}});
     const Scene scene = o.use_default ? o.input.with_samples(default_scene()) : o.input.load();
     const std::string name = o.use_default ? "default scene" : o.input.path;
+    // --coverage visible-error shows the ideal and the error at each sample count side by side.
+    const int panels = o.coverage == "visible-error" ? 1 + static_cast<int>(std::size(kErrorSampleCounts)) : 1;
     if (o.image_out) {
         try {
-            check_picture_size(std::int64_t{scene.viewport.width} * o.magnify,
+            check_picture_size((std::int64_t{scene.viewport.width} * panels + panels - 1) * o.magnify,
                                std::int64_t{scene.viewport.height} * o.magnify);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("--magnify " + std::to_string(o.magnify) + ": " + e.what());
@@ -116,6 +108,12 @@ void run_render(const RenderOptions& o) {
     reference::Stats stats;
     const auto meter = stderr_meter("reference render", "triangles");
     const Engine engine = o.engine.make(&stats, meter->progress());
+    if (panels > 1 && engine.contract) {
+        for (const int n : kErrorSampleCounts)
+            if (!engine.contract->renders(n))
+                throw std::invalid_argument("--coverage visible-error renders 1, 4, 8 and 16 samples a pixel; " +
+                                            engine.name + " does not render " + std::to_string(n));
+    }
     note_unbounded_triangles(scene, engine);
     const auto start = std::chrono::steady_clock::now();
     const Framebuffer fb = engine.render(scene);
@@ -143,17 +141,38 @@ void run_render(const RenderOptions& o) {
     const auto area_meter = stderr_meter("exact area", "triangles");
     const auto area = want_area ? reference::coverage_area(scene, area_meter->progress())
                                 : std::vector<reference::Rational>{};
+    std::optional<reference::VisibleArea> visible;
+    if (o.coverage.starts_with("visible") || o.visible_out) {
+        const auto visible_meter = stderr_meter("exact visible area", "rows");
+        const auto begin = std::chrono::steady_clock::now();
+        visible = reference::visible_area(scene, visible_meter->progress());
+        std::cout << "visible: the exact visible area in " << std::fixed << std::setprecision(2)
+                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count() << " s\n"
+                  << std::defaultfloat;
+    }
     // Every file's bytes first, so that nothing is written unless all of them could be made.
     std::vector<std::pair<std::string, std::string>> files;
     if (o.image_out) {
-        const Image picture = o.coverage == "area"    ? area_image(scene.viewport, area)
-                              : o.coverage == "depth" ? depth_image(fb)
-                                                      : resolve_ids(fb);
-        files.emplace_back(*o.image_out, encode_png(o.magnify == 1 ? picture : side_by_side({picture}, o.magnify)));
+        std::vector<Image> pictures;
+        if (o.coverage == "area") pictures.push_back(area_image(scene.viewport, area));
+        else if (o.coverage == "depth") pictures.push_back(depth_image(fb));
+        else if (o.coverage == "samples") pictures.push_back(resolve_ids(fb));
+        else pictures.push_back(visible_image(*visible));
+        if (o.coverage == "visible-error") {
+            for (const int n : kErrorSampleCounts) {
+                Scene at_n = scene;
+                at_n.samples = n;
+                pictures.push_back(resolve_error_image(*visible, engine.render(at_n)));
+            }
+        }
+        files.emplace_back(*o.image_out, encode_png(o.magnify == 1 && pictures.size() == 1
+                                                        ? pictures.front()
+                                                        : side_by_side(pictures, o.magnify)));
     }
     if (o.ids_out) files.emplace_back(*o.ids_out, format_ids(fb));
     if (o.depth_out) files.emplace_back(*o.depth_out, format_depth(fb));
     if (o.coverage_out) files.emplace_back(*o.coverage_out, format_area(scene.viewport, area));
+    if (o.visible_out) files.emplace_back(*o.visible_out, format_visible(*visible));
     write_files_atomic(std::vector<FileContent>(files.begin(), files.end()));
     for (const auto& file : files) std::cout << "wrote " << file.first << '\n';
 }
@@ -179,9 +198,11 @@ void add_render_command(CLI::App& app) {
         ->capture_default_str()
         ->needs(image);
     cmd->add_option("--coverage", o->coverage,
-                    "What the picture shows: 'samples' (ids, samples averaged), 'area' (exact area coverage) or "
-                    "'depth' (a grey ramp, nearest white, over the finite depths)")
-        ->check(CLI::IsMember({"samples", "area", "depth"}))
+                    "What the picture shows: 'samples' (ids, samples averaged), 'area' (exact area coverage), "
+                    "'depth' (a grey ramp, nearest white, over the finite depths), 'visible' (the ideal antialiased "
+                    "picture: id colours weighted by exact visible area) or 'visible-error' (that ideal, then the "
+                    "engine's error against it at 1, 4, 8 and 16 samples: grey = square root of the error)")
+        ->check(CLI::IsMember({"samples", "area", "depth", "visible", "visible-error"}))
         ->capture_default_str()
         ->needs(image);
     cmd->add_option("--ids-out", o->ids_out,
@@ -190,6 +211,9 @@ void add_render_command(CLI::App& app) {
                     "Write the depth buffer: H lines of W depths at pixel centres (inf where empty)");
     cmd->add_option("--coverage-out", o->coverage_out,
                     "Write the exact covered area of every pixel: H lines of W rationals p/q, depth ignored");
+    cmd->add_option("--visible-out", o->visible_out,
+                    "Write the exact visible area: H lines of W entries, id:area pairs joined by ',' (ids "
+                    "ascending, areas p/q), '-' where nothing is seen");
     cmd->callback([o, scene, def] {
         if (scene->count() == 0 && def->count() == 0) throw CLI::RequiredError("SCENE or --default");
         run_render(*o);
