@@ -94,6 +94,31 @@ TEST_F(Cli, ExactCoverageAreas) {
     EXPECT_EQ(read("area.txt"), "1/2 1/4\n");
 }
 
+// z = x and z = y / 2 on two large triangles under x + y = 4 (worked out in docs/design.md's terms): in
+// pixel (0, 0) the first is nearer left of x = y / 2 (1/4); in pixel (1, 2), cut by x + y = 4, it sees
+// the part left of x = y / 2 (1/6 of its 1/2); pixels beyond the hypotenuse see nothing.
+TEST_F(Cli, WritesTheExactVisibleArea) {
+    const Result r = rast("render " +
+                          file("crossing.tri", "viewport 4 3\ntri -4 -4 -4  8 -4 8  -4 8 -4\n"
+                                               "tri -4 -4 -2  8 -4 -2  -4 8 4\n") +
+                          " --visible-out " + out("visible.txt") + " -o " + out("error.png") +
+                          " --coverage visible-error");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(read("visible.txt"), "0:1 0:1/6,1:1/3 - -\n"
+                                   "0:3/4,1:1/4 1:1 1:1/2 -\n"
+                                   "0:1/4,1:3/4 1:1 1:1 1:1/2\n");
+    // Five panels of 4 x 3 (the ideal, then 1, 4, 8 and 16 samples) with a pixel between: 24 x 3. PNG
+    // gives width and height big-endian at bytes 16 and 20.
+    const std::string png = read("error.png");
+    ASSERT_GE(png.size(), 24u);
+    const auto be32 = [&](std::size_t at) {
+        return (std::uint32_t(std::uint8_t(png[at])) << 24) | (std::uint32_t(std::uint8_t(png[at + 1])) << 16) |
+               (std::uint32_t(std::uint8_t(png[at + 2])) << 8) | std::uint32_t(std::uint8_t(png[at + 3]));
+    };
+    EXPECT_EQ(be32(16), 24u);
+    EXPECT_EQ(be32(20), 3u);
+}
+
 TEST_F(Cli, WritesAPictureAndASummary) {
     const Result r = rast("render --default -o " + (dir / "out.png").string());
     ASSERT_EQ(r.status, 0) << r.out;
@@ -193,7 +218,7 @@ TEST_F(Cli, OutputIntoAMissingDirectoryFailsCleanly) {
 TEST_F(Cli, AnOutputThatIsTheInputIsRefused) {
     const std::string scene = file("corner.tri", kCorner);
     std::filesystem::create_hard_link(scene, dir / "link.tri");
-    for (const char* option : {"-o", "--ids-out", "--depth-out", "--coverage-out"})
+    for (const char* option : {"-o", "--ids-out", "--depth-out", "--coverage-out", "--visible-out"})
         for (const std::string& same : {scene, (dir / "." / "corner.tri").string(), out("link.tri")}) {
             const Result r = rast("render " + scene + " " + option + " " + same);
             EXPECT_EQ(r.status, 2) << option << " " << same;
@@ -331,7 +356,7 @@ TEST_F(Cli, AnOutputThatIsNotARegularFileIsRefused) {
 
 TEST_F(Cli, AnEmptyOutputPathIsRefused) {
     const std::string scene = file("corner.tri", kCorner);
-    for (const char* option : {"-o", "--ids-out", "--depth-out", "--coverage-out"}) {
+    for (const char* option : {"-o", "--ids-out", "--depth-out", "--coverage-out", "--visible-out"}) {
         const Result r = rast("render " + scene + " " + option + " ''");
         EXPECT_EQ(r.status, 2) << option;
         EXPECT_TRUE(contains(r.out, "rast: error: " + std::string(option) + " '': the path is empty\n")) << r.out;
