@@ -10,6 +10,7 @@
 #include <rast/fast.h>
 #include <rast/mesh.h>
 #include <rast/reference.h>
+#include <rast/visible_area.h>
 
 #include <unistd.h>
 
@@ -61,6 +62,18 @@ BenchScene generated(std::string name, const SceneSpec& spec, int samples = 1) {
     return {{std::move(name), "generated " + describe(spec), scene.triangles.size(), spec.viewport, samples, {}},
             std::move(scene),
             shared};
+}
+
+// The exact visible area of a scene on two threads, timed once (it is exact: every run gives the same),
+// its cost kept in the report.
+reference::VisibleArea time_visible_area(const std::string& name, const Scene& scene, Report& report) {
+    constexpr unsigned kVisibleThreads = 2;
+    VisibleCostRow row{name, scene.viewport, scene.triangles.size(), {}, kVisibleThreads, 0};
+    const auto start = std::chrono::steady_clock::now();
+    reference::VisibleArea visible = reference::visible_area(scene, {}, kVisibleThreads, &row.stats);
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.visible_cost.push_back(row);
+    return visible;
 }
 
 BenchScene mesh_scene(const std::filesystem::path& path, Viewport vp, int samples) {
@@ -296,16 +309,41 @@ Report run_bench(const Config& config, std::ostream& progress) {
     if (config.aa) {
         // Fat triangles of two sizes and a real mesh. Every pixel of each triangle's bounding box gets an
         // exact area, so the thin, long shapes (needles, slivers) would cost far more than they tell.
+        // Depths are random at each vertex, so triangles that overlap interpenetrate; the
+        // "interpenetrating" scene piles up ten times as many medium ones. The bunny also at a quarter of
+        // the size, where several triangles share each pixel.
         const SceneSpec small{.shape = Shape::small, .triangles = plan.aa_triangles, .viewport = plan.aa_viewport};
         const SceneSpec medium{.shape = Shape::medium, .triangles = plan.aa_triangles / 10, .viewport = plan.aa_viewport};
+        const SceneSpec piled{.shape = Shape::medium, .triangles = plan.aa_triangles, .viewport = plan.aa_viewport};
+        const Viewport quarter{plan.aa_viewport.width / 4, plan.aa_viewport.height / 4};
+        BenchScene dense = mesh_scene(config.mesh, quarter, 1);
+        dense.info.name += " " + std::to_string(quarter.width) + "x" + std::to_string(quarter.height);
         std::vector<BenchScene> scenes{generated("small", small), generated("medium", medium),
-                                       mesh_scene(config.mesh, plan.aa_viewport, 1)};
+                                       generated("interpenetrating", piled),
+                                       mesh_scene(config.mesh, plan.aa_viewport, 1), std::move(dense)};
         for (BenchScene& s : scenes) {
             progress << "[antialiasing] " << s.info.name << '\n';
             for (const PatternError& e : pattern_errors(s.scene, kSampleCounts)) report.aa.push_back({s.info.name, e});
+            const reference::VisibleArea visible = time_visible_area(s.info.name, s.scene, report);
+            for (const VisibleError& e : visible_errors(s.scene, visible, kSampleCounts))
+                report.visible_aa.push_back({s.info.name, e});
             report.aa_scenes.push_back(s.info);
         }
         for (const int n : kSampleCounts) report.discrepancy.emplace_back(n, halfplane_discrepancy(sample_pattern(n)));
+        // How the cost grows with the triangles reaching a pixel: the small scene 4 and 16 times as dense;
+        // and the bunny at 512 x 512.
+        for (const std::size_t times : {4, 16}) {
+            SceneSpec denser = small;
+            denser.triangles *= times;
+            const BenchScene s = generated("small x" + std::to_string(times), denser);
+            progress << "[antialiasing] visible area of " << s.info.name << '\n';
+            time_visible_area(s.info.name, s.scene, report);
+        }
+        const Viewport large{plan.aa_viewport.width * 2, plan.aa_viewport.height * 2};
+        const BenchScene bunny = mesh_scene(config.mesh, large, 1);
+        progress << "[antialiasing] visible area of the bunny at " << large.width << "x" << large.height << '\n';
+        time_visible_area(bunny.info.name + " " + std::to_string(large.width) + "x" + std::to_string(large.height),
+                          bunny.scene, report);
     }
     report.machine.load_after = load_average();
     return report;

@@ -53,6 +53,17 @@ std::string format_json(const Report& report) {
                                {"normal", {d.normal_x, d.normal_y}}, {"offset", d.offset},
                                {"resolution_rad", d.resolution}});
     }
+    json visible = json::array();
+    for (const VisibleAaRow& v : report.visible_aa) {
+        visible.push_back({{"scene", v.scene}, {"samples", v.error.samples}, {"pixels", v.error.pixels},
+                           {"mean_error", v.error.mean}, {"worst_error", v.error.worst}});
+    }
+    json cost = json::array();
+    for (const VisibleCostRow& c : report.visible_cost) {
+        cost.push_back({{"scene", c.scene}, {"triangles", c.triangles},
+                        {"viewport", {c.viewport.width, c.viewport.height}}, {"pixels_cut", c.stats.pixels_cut},
+                        {"candidates", c.stats.candidates}, {"threads", c.threads}, {"seconds", c.seconds}});
+    }
     const Machine& m = report.machine;
     const json out = {
         {"machine", {{"cpu", m.cpu}, {"cores", m.cores}, {"load_before", m.load_before},
@@ -67,6 +78,8 @@ std::string format_json(const Report& report) {
         {"antialiasing_scenes", scenes_json(report.aa_scenes)},
         {"antialiasing", aa},
         {"halfplane_discrepancy", discrepancy},
+        {"visible_antialiasing", visible},
+        {"visible_area_cost", cost},
         {"notes", report.notes},
     };
     return out.dump(2) + "\n";

@@ -3,6 +3,8 @@
 // the reference, both on log scales. Error 0 has no logarithm, so exact points sit on their own row.
 #include <rast/bench_report.h>
 
+#include "svg.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,34 +15,17 @@
 namespace rast::bench {
 namespace {
 
+using namespace svg;
+
 // The exact points get a band below the log axis, one row per scene so that their labels do not collide.
 constexpr double kLeft = 90, kRight = 760, kTop = 40, kBottom = 520, kZeroBand = 550, kZeroRowStep = 9,
                  kHeight = 680, kWidth = 1000;
-constexpr std::array<const char*, 8> kColours{"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
-                                               "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
 struct Point {
     std::size_t scene;
     std::string engine;
     double speed, error;
 };
-
-std::string num(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f", v);
-    return text;
-}
-
-std::string power_of_ten(double exponent) { return "1e" + std::to_string(static_cast<int>(exponent)); }
-
-std::string text(double x, double y, const std::string& body, const char* extra = "") {
-    return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" " + extra + ">" + body + "</text>\n";
-}
-
-std::string line(double x0, double y0, double x1, double y1, const char* colour) {
-    return "<line x1=\"" + num(x0) + "\" y1=\"" + num(y0) + "\" x2=\"" + num(x1) + "\" y2=\"" + num(y1) +
-           "\" stroke=\"" + colour + "\"/>\n";
-}
 
 }  // namespace
 
@@ -74,9 +59,7 @@ std::string format_svg(const Report& report) {
     const auto lx = [&](double l) { return kLeft + (l - x_lo) / (x_hi - x_lo) * (kRight - kLeft); };
     const auto ly = [&](double l) { return kBottom - (l - y_lo) / (y_hi - y_lo) * (kBottom - kTop); };
 
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(kWidth) + "\" height=\"" +
-                      num(kHeight) + "\" font-family=\"sans-serif\" font-size=\"11\">\n" +
-                      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    std::string svg = open(kWidth, kHeight);
     for (double e = x_lo; e <= x_hi; ++e) {
         svg += line(lx(e), kTop, lx(e), kBottom, "#ddd") +
                text(lx(e), kHeight - 32, power_of_ten(e), "text-anchor=\"middle\"");
@@ -91,13 +74,13 @@ std::string format_svg(const Report& report) {
            text(kLeft - 6, (kZeroBand + zero_band_end) / 2, "0 (exact)", "text-anchor=\"end\"");
     svg += text((kLeft + kRight) / 2, kHeight - 10, "median triangles per second, one thread (log)", "text-anchor=\"middle\"");
     svg += text(16, (kTop + kBottom) / 2, "fraction of samples whose id differs from the reference (log)",
-                ("text-anchor=\"middle\" transform=\"rotate(-90 16 " + num((kTop + kBottom) / 2) + ")\"").c_str());
+                "text-anchor=\"middle\" transform=\"rotate(-90 16 " + num((kTop + kBottom) / 2) + ")\"");
     for (const Point& p : points) {
         const char* colour = kColours[p.scene % kColours.size()];
         const double x = lx(std::log10(p.speed));
         const double y = p.error == 0 ? kZeroBand + kZeroRowStep * static_cast<double>(p.scene) : ly(std::log10(p.error));
         svg += "<circle cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"3.5\" fill=\"" + colour + "\"/>\n";
-        svg += text(x + 5, y + 3, p.engine, ("font-size=\"9\" fill=\"" + std::string(colour) + "\"").c_str());
+        svg += text(x + 5, y + 3, p.engine, "font-size=\"9\" fill=\"" + std::string(colour) + "\"");
     }
     for (std::size_t k = 0; k < report.scenes.size(); ++k) {
         const double y = kTop + 18.0 * static_cast<double>(k);

@@ -91,6 +91,36 @@ std::string aa_tables(const Report& report) {
     return out;
 }
 
+// Beside each visible-area row, the depth-ignoring figures of the same scene and pattern, where measured.
+std::string visible_tables(const Report& report) {
+    std::map<std::pair<std::string, int>, PatternError> ignoring;
+    for (const AaRow& a : report.aa) ignoring[{a.scene, a.error.samples}] = a.error;
+    std::string out = row({"scene", "samples/pixel", "pixels", "mean error", "worst error",
+                           "depth ignored: mean / worst"}) +
+                      row({"---", "---:", "---:", "---:", "---:", "---:"});
+    for (const VisibleAaRow& v : report.visible_aa) {
+        const auto it = ignoring.find({v.scene, v.error.samples});
+        out += row({v.scene, std::to_string(v.error.samples), std::to_string(v.error.pixels),
+                    number(v.error.mean, "%.4f"), number(v.error.worst, "%.4f"),
+                    it == ignoring.end() ? "—"
+                                         : number(it->second.mean, "%.4f") + " / " + number(it->second.worst, "%.4f")});
+    }
+    out += "\nThe cost of the exact visible area (one run; exact, so every run gives the same areas):\n\n";
+    out += row({"scene", "triangles", "viewport", "pixels cut", "triangles per pixel cut", "threads", "seconds",
+                "µs per pixel cut"}) +
+           row({"---", "---:", "---", "---:", "---:", "---:", "---:", "---:"});
+    for (const VisibleCostRow& c : report.visible_cost) {
+        const double pixels = static_cast<double>(c.stats.pixels_cut);
+        out += row({c.scene, std::to_string(c.triangles),
+                    std::to_string(c.viewport.width) + "×" + std::to_string(c.viewport.height),
+                    std::to_string(c.stats.pixels_cut),
+                    pixels == 0 ? "—" : number(static_cast<double>(c.stats.candidates) / pixels, "%.2f"),
+                    std::to_string(c.threads), number(c.seconds, "%.2f"),
+                    pixels == 0 ? "—" : number(c.seconds * 1e6 / pixels, "%.1f")});
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string format_table(const Report& report) {
@@ -120,6 +150,14 @@ std::string format_table(const Report& report) {
     if (!report.aa.empty()) {
         out += "\n### Antialiasing: sample patterns against the exact area\n\n" + scenes_table(report.aa_scenes) +
                "\n" + aa_tables(report);
+    }
+    if (!report.visible_aa.empty() || !report.visible_cost.empty()) {
+        out += "\n### Antialiasing with depth: the resolved image against the exact visible area\n\n"
+               "Per pixel, the total variation between the fractions of the samples (reference, z-buffered)\n"
+               "each triangle holds and the areas it sees: the largest error of the resolved colour, colours\n"
+               "in [0, 1]. Pixels where something is seen or covered. Beside it, the depth-ignoring error of\n"
+               "each triangle's own area (the table above), which misses what occlusion does.\n\n" +
+               visible_tables(report);
     }
     for (const std::string& note : report.notes) out += "\nNote: " + note + "\n";
     return out;

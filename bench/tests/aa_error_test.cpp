@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <rast/visible_area.h>
+
 #include <array>
 #include <stdexcept>
 
@@ -101,6 +103,24 @@ TEST(HalfplaneDiscrepancy, FourSamplesIsTheTwoSampleLine) {
 // error 11/64, the worst over all half-planes.
 TEST(HalfplaneDiscrepancy, SixteenSamplesIsTheFourSampleLine) {
     EXPECT_EQ(halfplane_discrepancy(sample_pattern(16)).value, 11.0 / 64);
+}
+
+// The lower-left half of a pixel in front of a large triangle: each sees 1/2. The one sample, at the
+// centre, lies on the half's right edge, so the one behind owns it: fractions 0 and 1 against 1/2 and
+// 1/2, error 1/2. Of the 4x samples, (1/8, 3/8) and (5/8, 1/8) lie below x + y = 1: 2 of 4, error 0.
+TEST(VisibleErrors, HalfAPixelInFrontOfALargeTriangle) {
+    const Scene s{Viewport{2, 1}, 1,
+                  {Triangle{{Vertex{0, 0, 0}, Vertex{1, 0, 0}, Vertex{0, 1, 0}}},
+                   Triangle{{Vertex{-1, -1, 1}, Vertex{5, -1, 1}, Vertex{-1, 5, 1}}}}};
+    const std::array counts{1, 4};
+    const auto errors = visible_errors(s, reference::visible_area(s), counts);
+    ASSERT_EQ(errors.size(), 2u);
+    // Pixel (1, 0) lies inside the triangle behind (x + y <= 4 holds at its corner (2, 1)): no error.
+    EXPECT_EQ(errors[0].samples, 1);
+    EXPECT_EQ(errors[0].pixels, 2u);
+    EXPECT_EQ(errors[0].worst, 0.5);
+    EXPECT_EQ(errors[0].mean, 0.25);
+    EXPECT_EQ(errors[1].worst, 0);
 }
 
 TEST(HalfplaneDiscrepancy, ResolutionIsHalfTheSpacing) {

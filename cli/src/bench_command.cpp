@@ -37,7 +37,7 @@ struct BenchOptions {
     bool quick = false;
     std::vector<std::string> only;
     std::string mesh = default_mesh();
-    std::optional<std::string> json_out, plot_out, markdown_out;
+    std::optional<std::string> json_out, plot_out, aa_plot_out, markdown_out;
     std::vector<std::string> notes;
     std::vector<std::string> plugins;  // --engine plugin:PATH, each
     double plugin_timeout = 60;
@@ -51,6 +51,7 @@ std::string command_line(const BenchOptions& o) {
     if (o.mesh != default_mesh()) command += " --mesh " + shell_word(o.mesh);
     if (o.json_out) command += " --json " + shell_word(*o.json_out);
     if (o.plot_out) command += " --plot " + shell_word(*o.plot_out);
+    if (o.aa_plot_out) command += " --aa-plot " + shell_word(*o.aa_plot_out);
     if (o.markdown_out) command += " --markdown " + shell_word(*o.markdown_out);
     for (const std::string& note : o.notes) command += " --note " + shell_word(note);
     for (const std::string& plugin : o.plugins) command += " --engine " + shell_word(plugin);
@@ -60,16 +61,22 @@ std::string command_line(const BenchOptions& o) {
 std::string markdown(const bench::Report& report, const BenchOptions& o) {
     std::string out = "# rast bench: speed against error\n\n"
                       "Every figure below comes from one run of the command shown under the machine.\n\n";
-    if (o.plot_out) {
-        const auto plot = std::filesystem::relative(std::filesystem::absolute(*o.plot_out),
-                                                    std::filesystem::absolute(*o.markdown_out).parent_path());
-        out += "![speed against error: one point per engine and scene](" + plot.generic_string() + ")\n\n";
-    }
+    const auto beside = [&](const std::string& path) {
+        return std::filesystem::relative(std::filesystem::absolute(path),
+                                         std::filesystem::absolute(*o.markdown_out).parent_path())
+            .generic_string();
+    };
+    if (o.plot_out) out += "![speed against error: one point per engine and scene](" + beside(*o.plot_out) + ")\n\n";
+    if (o.aa_plot_out)
+        out += "![antialiasing error against samples per pixel](" + beside(*o.aa_plot_out) + ")\n\n";
     return out + bench::format_table(report);
 }
 
 void run(const BenchOptions& o) {
-    check_output_paths({o.mesh}, {{"--json", o.json_out}, {"--plot", o.plot_out}, {"--markdown", o.markdown_out}});
+    check_output_paths({o.mesh}, {{"--json", o.json_out},
+                                  {"--plot", o.plot_out},
+                                  {"--aa-plot", o.aa_plot_out},
+                                  {"--markdown", o.markdown_out}});
     bench::Config config;
     config.quick = o.quick;
     if (!o.only.empty()) {
@@ -91,6 +98,7 @@ void run(const BenchOptions& o) {
     std::vector<std::pair<std::string, std::string>> files;
     if (o.json_out) files.emplace_back(*o.json_out, bench::format_json(report));
     if (o.plot_out) files.emplace_back(*o.plot_out, bench::format_svg(report));
+    if (o.aa_plot_out) files.emplace_back(*o.aa_plot_out, bench::format_aa_svg(report));
     if (o.markdown_out) files.emplace_back(*o.markdown_out, markdown(report, o));
     write_files_atomic(std::vector<FileContent>(files.begin(), files.end()));
 }
@@ -103,7 +111,8 @@ void add_bench_command(CLI::App& app) {
         "bench",
         "Time every engine (reference; fast fixed4/8/16, float32/64 on 1 and 2 threads; llvmpipe) on the\n"
         "same scenes and measure each one's error against the exact reference; hard-case families; the\n"
-        "antialiasing error of 1/4/8/16 samples against the exact area. Progress on stderr, tables on stdout.");
+        "antialiasing error of 1/4/8/16 samples against the exact area and, z-buffered, against the exact\n"
+        "visible area. Progress on stderr, tables on stdout.");
     bench->add_flag("--quick", options->quick, "Small scenes and few runs: under a minute (CI smoke test)");
     CLI::Option* only = bench->add_option("--only", options->only, "Run only these sections")
                             ->check(CLI::IsMember({"speed", "hard", "aa"}));
@@ -121,7 +130,16 @@ void add_bench_command(CLI::App& app) {
         ->capture_default_str();
     bench->add_option("--json", options->json_out, "Write every figure as JSON");
     bench->add_option("--plot", options->plot_out, "Write the speed-against-error plot as SVG");
-    bench->add_option("--markdown", options->markdown_out, "Write the tables as Markdown, with the plot");
+    bench->add_option("--aa-plot", options->aa_plot_out,
+                      "Write the antialiasing plot as SVG: mean error against samples per pixel, against the "
+                      "exact visible area and depth ignored")
+        ->check([only](const std::string&) -> std::string {
+            if (only->count() == 0) return {};
+            for (const std::string& section : only->results())
+                if (section == "aa") return {};
+            return "no section chosen with --only measures antialiasing (aa does)";
+        });
+    bench->add_option("--markdown", options->markdown_out, "Write the tables as Markdown, with the plots");
     bench->add_option("--note", options->notes, "A remark for the report, e.g. about the machine");
     CLI::Option* engine =
         bench->add_option("--engine", options->plugins,

@@ -81,10 +81,11 @@ std::optional<Candidate> make_candidate(const Triangle& t, std::size_t id, Viewp
     return Candidate{std::move(*cutter), rows, columns, za, zb, zc};
 }
 
-// The pieces of row j, pixel after pixel, and where each pixel's begin.
+// The pieces of row j, pixel after pixel, and how many each pixel has.
 struct Row {
     std::vector<std::size_t> count;
     std::vector<VisiblePiece> pieces;
+    VisibleStats stats;
 };
 
 Row cut_row(int j, int width, const std::vector<const Candidate*>& in_row) {
@@ -99,6 +100,8 @@ Row cut_row(int j, int width, const std::vector<const Candidate*>& in_row) {
             if (c->columns.first <= i && i <= c->columns.second) order.emplace_back(c->za * x + c->zb * y + c->zc, &c->cutter);
         }
         if (order.empty()) continue;
+        ++row.stats.pixels_cut;
+        row.stats.candidates += order.size();
         std::sort(order.begin(), order.end(), [](const auto& p, const auto& q) {
             return p.first < q.first || (p.first == q.first && p.second->id < q.second->id);
         });
@@ -113,7 +116,7 @@ Row cut_row(int j, int width, const std::vector<const Candidate*>& in_row) {
 
 }  // namespace
 
-VisibleArea visible_area(const Scene& scene, const Progress& progress, unsigned threads) {
+VisibleArea visible_area(const Scene& scene, const Progress& progress, unsigned threads, VisibleStats* stats) {
     const Viewport vp = scene.viewport;
     detail::require_valid(vp, 1);
     std::vector<Candidate> candidates;
@@ -145,6 +148,10 @@ VisibleArea visible_area(const Scene& scene, const Progress& progress, unsigned 
     std::vector<std::size_t> first{0};
     std::vector<VisiblePiece> pieces;
     for (Row& row : rows) {
+        if (stats) {
+            stats->pixels_cut += row.stats.pixels_cut;
+            stats->candidates += row.stats.candidates;
+        }
         for (const std::size_t n : row.count) first.push_back(first.back() + n);
         std::move(row.pieces.begin(), row.pieces.end(), std::back_inserter(pieces));
     }

@@ -94,6 +94,15 @@ TEST(VisibleArea, ResolveErrorIsTheTotalVariation) {
     EXPECT_EQ(resolve_error(Pieces{{3, Rational(1)}}, std::vector<std::int32_t>{-1, 3}), Rational(1, 2));
 }
 
+// A triangle over x in [0, 2] reaches pixels 0 and 1 (not 2, which it only touches); one inside pixel 0:
+// two pixels cut, three (triangle, pixel) pairs.
+TEST(VisibleArea, StatsCountTheTrianglesEachPixelCuts) {
+    VisibleStats stats;
+    visible_area(testing::scene(3, 1, {flat(0, 0, 2, 0, 0, 1), flat(0.25, 0.25, 0.75, 0.25, 0.25, 0.75)}), {}, 1, &stats);
+    EXPECT_EQ(stats.pixels_cut, 2u);
+    EXPECT_EQ(stats.candidates, 3u);
+}
+
 // Several pixels, rows on several threads: every thread count gives the same areas, the progress counts
 // rows from 0 to the last, one call at a time.
 TEST(VisibleArea, ThreadsAndProgress) {

@@ -1,8 +1,10 @@
 // rast — how far each sample pattern is from the ideal antialiasing: the exact area of a triangle inside
-// each pixel square (the box filter), against the fraction of the pixel's samples the triangle covers.
+// each pixel square (the box filter), against the fraction of the pixel's samples the triangle covers;
+// and, with depth, the exact visible area against the resolved samples of the z-buffer.
 #pragma once
 
 #include <rast/scene.h>
+#include <rast/visible_area.h>
 
 #include <cstddef>
 #include <span>
@@ -25,6 +27,19 @@ struct PatternError {
 // reference::covers, both exact; each pixel's error is exact, rounded once to double. Pixels outside
 // the viewport do not count.
 std::vector<PatternError> pattern_errors(const Scene& scene, std::span<const int> sample_counts);
+
+// The resolved image against the exact visible area (rast/visible_area.h) of a z-buffered scene: per
+// pixel, reference::resolve_error between the reference's samples and the visible areas, the largest
+// error the resolved colour can have for colours in [0, 1]. Pixels counted: those where something is
+// seen or some sample covered. One entry per sample count, each rendered by the reference.
+struct VisibleError {
+    int samples = 0;
+    std::size_t pixels = 0;
+    double mean = 0;
+    double worst = 0;
+};
+std::vector<VisibleError> visible_errors(const Scene& scene, const reference::VisibleArea& visible,
+                                         std::span<const int> sample_counts);
 
 // The error of one triangle at one pixel: (covered samples of pixel (i, j)) / n - pixel_area, signed.
 double pixel_coverage_error(const Triangle& t, int i, int j, int samples);

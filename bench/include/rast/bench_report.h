@@ -58,6 +58,21 @@ struct AaRow {
     PatternError error;
 };
 
+struct VisibleAaRow {
+    std::string scene;
+    VisibleError error;
+};
+
+// What the exact visible area cost on one scene.
+struct VisibleCostRow {
+    std::string scene;
+    Viewport viewport;
+    std::size_t triangles = 0;
+    reference::VisibleStats stats;
+    unsigned threads = 0;
+    double seconds = 0;  // wall time of one reference::visible_area
+};
+
 struct Report {
     Machine machine;
     std::string command;
@@ -70,6 +85,8 @@ struct Report {
     std::vector<SceneInfo> aa_scenes;
     std::vector<AaRow> aa;
     std::vector<std::pair<int, Discrepancy>> discrepancy;  // per sample count
+    std::vector<VisibleAaRow> visible_aa;                  // z-buffered: against the exact visible area
+    std::vector<VisibleCostRow> visible_cost;
     std::vector<std::string> notes;    // what was skipped, and why
 };
 
@@ -78,5 +95,8 @@ std::string format_json(const Report& report);
 // Log-log: x the median triangles per second on one thread, y the fraction of samples whose id differs
 // from the reference; one labelled point per engine and scene, exact ones on a separate "0" row.
 std::string format_svg(const Report& report);
+// Log-log: x samples per pixel, y the mean per-pixel error; per scene, against the exact visible area
+// (solid) and, where measured, the depth-ignoring per-triangle area error (dashed).
+std::string format_aa_svg(const Report& report);
 
 }  // namespace rast::bench

@@ -45,8 +45,15 @@ private:
 // lie in [0, 1]: the average over samples against the average over the area.
 Rational resolve_error(std::span<const VisiblePiece> visible, std::span<const std::int32_t> sample_ids);
 
+// What the cutting had to do: how the cost grows with the triangles that reach a pixel.
+struct VisibleStats {
+    std::uint64_t pixels_cut = 0;  // pixels that some triangle's box reaches
+    std::uint64_t candidates = 0;  // (triangle, pixel) pairs cut, over those pixels
+};
+
 // `threads` 0 takes every core; rows are shared out among them. `progress` counts pixel rows (from any
 // of those threads, one call at a time).
-VisibleArea visible_area(const Scene& scene, const Progress& progress = {}, unsigned threads = 0);
+VisibleArea visible_area(const Scene& scene, const Progress& progress = {}, unsigned threads = 0,
+                         VisibleStats* stats = nullptr);
 
 }  // namespace rast::reference
