@@ -19,13 +19,14 @@ inline std::string num(double v) {
 inline std::string power_of_ten(double exponent) { return "1e" + std::to_string(static_cast<int>(exponent)); }
 
 inline std::string text(double x, double y, const std::string& body, const std::string& extra = "") {
-    return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\" " + extra + ">" + body + "</text>\n";
+    return "<text x=\"" + num(x) + "\" y=\"" + num(y) + "\"" + (extra.empty() ? "" : " " + extra) + ">" + body +
+           "</text>\n";
 }
 
 inline std::string line(double x0, double y0, double x1, double y1, const std::string& colour,
                         const std::string& extra = "") {
     return "<line x1=\"" + num(x0) + "\" y1=\"" + num(y0) + "\" x2=\"" + num(x1) + "\" y2=\"" + num(y1) +
-           "\" stroke=\"" + colour + "\" " + extra + "/>\n";
+           "\" stroke=\"" + colour + "\"" + (extra.empty() ? "" : " " + extra) + "/>\n";
 }
 
 // The opening of a picture of width x height on a white ground.

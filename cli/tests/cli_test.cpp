@@ -505,6 +505,15 @@ TEST_F(Cli, BenchRefusesAMeshNoChosenSectionRenders) {
     EXPECT_FALSE(std::filesystem::exists(dir / "a.json"));
 }
 
+// Without the antialiasing section there is nothing to plot: --aa-plot would be ignored.
+TEST_F(Cli, BenchRefusesAnAaPlotWithoutTheAaSection) {
+    if (!contains(rast("--help").out, "\n  bench ")) GTEST_SKIP() << "built without rast bench";
+    const Result r = rast("bench --quick --only hard --aa-plot " + out("aa.svg"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(contains(r.out, "--aa-plot: no section chosen with --only measures antialiasing (aa does)")) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir / "aa.svg"));
+}
+
 // What rast writes as a command to type again: each word read back by the shell as it was.
 TEST(ShellWord, EveryWordReadsBackFromTheShellAsItWas) {
     EXPECT_EQ(shell_word("corpus/fans/a-b_c.tri"), "corpus/fans/a-b_c.tri");  // nothing to quote
