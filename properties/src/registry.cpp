@@ -38,8 +38,8 @@ constexpr Property kProperties[] = {
      area_tiling},
     {"conforms", "every sample is as the engine's contract demands: required ones covered, forbidden ones not, "
      "ids in the (z, id) order", contract_engines, conforms},
-    {"visible_area", "the exact visible area per pixel equals an independent slab computation and sums to the "
-     "union's area", reference_only, visible_area},
+    {"visible_area", "the exact visible area per pixel equals an independent slab computation, sums to the "
+     "union's area and does not depend on the order the triangles are cut in", reference_only, visible_area},
     {"msaa_visible_bound", "the resolved samples are within (cells a boundary meets) / N of the visible area",
      exact_zid_engines, msaa_visible_bound},
 };

@@ -5,6 +5,9 @@
 
 #include "checks.h"
 
+#include <algorithm>
+#include <numeric>
+#include <random>
 #include <span>
 #include <string>
 
@@ -29,8 +32,9 @@ std::string describe(const std::vector<std::pair<std::size_t, Rational>>& pieces
 }  // namespace
 
 // The reference's visible areas equal the slab judge's in every pixel; they sum to the area of the union
-// (at most 1); where nothing overlaps, to the exact coverage, each triangle keeping its own area; and a
-// triangle holding the pixel in front of all the others near it owns all of it.
+// (at most 1); where nothing overlaps, to the exact coverage, each triangle keeping its own area; the
+// order the triangles are cut in changes nothing; and a triangle holding the pixel in front of all the
+// others near it owns all of it.
 Outcome visible_area(const Scene& scene, const Engine&) {
     return visible_area_of(scene, [](const Scene& s) { return reference::visible_area(s); });
 }
@@ -39,6 +43,11 @@ Outcome visible_area_of(const Scene& scene, const std::function<reference::Visib
     const reference::VisibleArea visible = computed(scene);
     const std::vector<Rational> coverage = reference::coverage_area(scene);
     const Viewport vp = scene.viewport;
+    std::vector<std::vector<std::size_t>> orders(3, std::vector<std::size_t>(scene.triangles.size()));
+    std::iota(orders[0].begin(), orders[0].end(), std::size_t{0});
+    orders[1].assign(orders[0].rbegin(), orders[0].rend());
+    orders[2] = orders[0];
+    std::shuffle(orders[2].begin(), orders[2].end(), std::mt19937(static_cast<unsigned>(scene.triangles.size())));
     for (int j = 0; j < vp.height; ++j)
         for (int i = 0; i < vp.width; ++i) {
             const auto pieces = visible.at(i, j);
@@ -59,6 +68,13 @@ Outcome visible_area_of(const Scene& scene, const std::function<reference::Visib
                         return Outcome::fail(pixel_name(i, j) + ": nothing overlaps there, yet triangle " +
                                              std::to_string(p.id) + " shows " + p.area.str() + " of its area " +
                                              reference::pixel_area(scene.triangles[p.id], i, j).str());
+            }
+            // Draw order: the triangles cut into the pixel in the scene's order, reversed, and shuffled.
+            for (const auto& order : orders) {
+                const auto again = reference::visible_in_pixel(scene, i, j, order);
+                if (!std::equal(pieces.begin(), pieces.end(), again.begin(), again.end()))
+                    return Outcome::fail(pixel_name(i, j) + ": inserting the triangles in another order gives " +
+                                         describe(again) + ", not " + describe(pieces));
             }
             if (const auto front = front_cover(scene, i, j);
                 front && !(pieces.size() == 1 && pieces[0].id == *front && pieces[0].area == 1))

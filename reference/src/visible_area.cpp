@@ -16,6 +16,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace rast::reference {
@@ -31,6 +32,23 @@ VisibleArea::VisibleArea(Viewport viewport, std::vector<std::size_t> first, std:
 std::span<const VisiblePiece> VisibleArea::at(int i, int j) const {
     const std::size_t p = static_cast<std::size_t>(j) * static_cast<std::size_t>(viewport_.width) + static_cast<std::size_t>(i);
     return std::span(pieces_).subspan(first_[p], first_[p + 1] - first_[p]);
+}
+
+std::vector<VisiblePiece> visible_in_pixel(const Scene& scene, int i, int j, std::span<const std::size_t> order) {
+    std::vector<detail::Cutter> cutters;
+    cutters.reserve(order.size());
+    std::vector<bool> named(scene.triangles.size());
+    for (const std::size_t id : order) {
+        if (id >= scene.triangles.size() || named[id])
+            throw std::invalid_argument("rast::reference::visible_in_pixel: triangle " + std::to_string(id) +
+                                        (id >= scene.triangles.size() ? " is not in the scene" : " is named twice"));
+        named[id] = true;
+        detail::require_finite(scene.triangles[id], id);
+        if (auto c = detail::make_cutter(scene.triangles[id], id)) cutters.push_back(std::move(*c));
+    }
+    std::vector<const detail::Cutter*> pointers;
+    for (const detail::Cutter& c : cutters) pointers.push_back(&c);
+    return detail::visible_in_square(i, j, pointers);
 }
 
 Rational resolve_error(std::span<const VisiblePiece> visible, std::span<const std::int32_t> sample_ids) {

@@ -1,6 +1,5 @@
 // The exact visible area: small cases worked out by hand, and the cut's independence of insertion order.
 #include "scenes.h"
-#include "visible_pixel.h"
 
 #include <rast/visible_area.h>
 
@@ -8,6 +7,7 @@
 
 #include <algorithm>
 #include <mutex>
+#include <stdexcept>
 #include <random>
 #include <vector>
 
@@ -143,26 +143,34 @@ TEST(VisibleArea, InsertionOrderChangesNothing) {
     std::mt19937 rng(20261126);
     std::uniform_int_distribution<int> eighth(-8, 16), level(0, 3);
     for (int round = 0; round < 400; ++round) {
-        std::vector<detail::Cutter> cutters;
-        for (std::size_t id = 0; cutters.size() < 5; ++id) {
+        Scene s{Viewport{1, 1}, 1, {}};
+        for (int k = 0; k < 5; ++k) {
             Triangle t;
             const bool flat_one = level(rng) < 2;
             const double z = level(rng) % 2;
             for (Vertex& v : t.v)
                 v = Vertex{eighth(rng) / 8.0, eighth(rng) / 8.0, flat_one ? z : static_cast<double>(level(rng))};
-            if (auto c = detail::make_cutter(t, id)) cutters.push_back(std::move(*c));
+            s.triangles.push_back(t);
         }
-        std::vector<const detail::Cutter*> order;
-        for (const auto& c : cutters) order.push_back(&c);
-        const Pieces first = detail::visible_in_square(0, 0, order);
+        const Pieces first = pixel(s);
         Rational total(0);
         for (const VisiblePiece& p : first) total += p.area;
         EXPECT_LE(total, 1);
+        std::vector<std::size_t> order{0, 1, 2, 3, 4};
         for (int shuffle = 0; shuffle < 4; ++shuffle) {
             std::shuffle(order.begin(), order.end(), rng);
-            ASSERT_EQ(detail::visible_in_square(0, 0, order), first) << "round " << round;
+            ASSERT_EQ(visible_in_pixel(s, 0, 0, order), first) << "round " << round;
         }
     }
+}
+
+// A pixel alone sees only the triangles named; naming one that is not there, or one twice, is an error.
+TEST(VisibleArea, OnePixelWithTheTrianglesNamed) {
+    const Scene s = testing::scene(1, 1, {large_on_plane(1, 0, 0), large_on_plane(0, 0.5, 0)});
+    EXPECT_EQ(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{1}), (Pieces{{1, Rational(1)}}));
+    EXPECT_EQ(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{}), Pieces{});
+    EXPECT_THROW(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{2}), std::invalid_argument);
+    EXPECT_THROW(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{0, 0}), std::invalid_argument);
 }
 
 }  // namespace

@@ -39,6 +39,12 @@ private:
     std::vector<VisiblePiece> pieces_;
 };
 
+// The visible areas of pixel (i, j) alone, cutting with the triangles `order` names, in that order (each
+// id at most once; a triangle left out is not there). visible_area inserts them roughly front to back;
+// any order gives the same areas, which a property holds. Throws std::invalid_argument for an id out of
+// range or named twice, or a coordinate that is not finite.
+std::vector<VisiblePiece> visible_in_pixel(const Scene& scene, int i, int j, std::span<const std::size_t> order);
+
 // How far a pixel's samples are from its visible areas: the total variation distance between the
 // fraction of the samples each owner holds (`sample_ids`, -1 for none) and the area it sees (nothing seen
 // owning what is left). It is the largest error the resolved colour of the pixel can have, when colours
