@@ -7,6 +7,7 @@
 #include <rast/reference.h>
 
 #include "pixel_box.h"
+#include "rational_polygon.h"
 #include "validate.h"
 
 #include <algorithm>
@@ -18,10 +19,8 @@ namespace rast::reference {
 
 namespace {
 
-struct RationalPoint {
-    Rational x, y;
-};
-using Polygon = std::vector<RationalPoint>;
+using detail::Polygon;
+using detail::RationalPoint;
 
 // One side of a pixel square: the half-plane x >= bound, x <= bound, y >= bound or y <= bound.
 struct HalfPlane {
@@ -55,16 +54,8 @@ Polygon clip(const Polygon& polygon, const HalfPlane& h) {
     return out;
 }
 
-// The shoelace formula, absolute: winding does not matter, and zero-area triangles give 0.
-Rational area(const Polygon& polygon) {
-    Rational twice(0);
-    for (std::size_t k = 0; k < polygon.size(); ++k) {
-        const RationalPoint& p = polygon[k];
-        const RationalPoint& q = polygon[(k + 1) % polygon.size()];
-        twice += p.x * q.y - q.x * p.y;
-    }
-    return abs(twice) / 2;
-}
+// Absolute: winding does not matter, and zero-area triangles give 0.
+Rational area(const Polygon& polygon) { return abs(detail::signed_area(polygon)); }
 
 // The triangle clipped to the strip j <= y <= j + 1 of pixel row j: a convex polygon.
 Polygon row_strip(const Triangle& t, int j) {

@@ -12,10 +12,8 @@ namespace rast::reference::detail {
 
 namespace {
 
-using Polygon = std::vector<RationalPoint>;  // convex, counter-clockwise, non-zero area
-
 struct Region {
-    Polygon polygon;
+    Polygon polygon;  // convex, counter-clockwise, of non-zero area
     const Cutter* owner;  // nullptr: nothing is visible there
 };
 
@@ -54,17 +52,6 @@ void cut(const Polygon& polygon, const Affine& f, Polygon& below, Polygon& above
             above.push_back(std::move(crossing));
         }
     }
-}
-
-// The shoelace formula; the polygon is counter-clockwise.
-Rational area(const Polygon& polygon) {
-    Rational twice(0);
-    for (std::size_t k = 0; k < polygon.size(); ++k) {
-        const RationalPoint& p = polygon[k];
-        const RationalPoint& q = polygon[(k + 1) % polygon.size()];
-        twice += p.x * q.y - q.x * p.y;
-    }
-    return twice / 2;
 }
 
 // z_front - z_back as one affine function.
@@ -148,7 +135,7 @@ std::vector<VisiblePiece> visible_in_square(int i, int j, std::span<const Cutter
     for (const Cutter* t : cutters) insert(map, *t);
     std::map<std::size_t, Rational> areas;
     for (const Region& region : map) {
-        if (region.owner) areas[region.owner->id] += area(region.polygon);
+        if (region.owner) areas[region.owner->id] += signed_area(region.polygon);
     }
     std::vector<VisiblePiece> pieces;
     pieces.reserve(areas.size());

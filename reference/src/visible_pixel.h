@@ -9,6 +9,8 @@
 // front to back saves cuts, since a region whose owner is nearer at all its corners is left whole.
 #pragma once
 
+#include "rational_polygon.h"
+
 #include <rast/reference.h>
 #include <rast/visible_area.h>
 
@@ -19,10 +21,6 @@
 #include <vector>
 
 namespace rast::reference::detail {
-
-struct RationalPoint {
-    Rational x, y;
-};
 
 // The affine function a x + b y + c.
 struct Affine {
