@@ -26,6 +26,13 @@ struct Triangle {
     friend bool operator==(const Triangle&, const Triangle&) = default;
 };
 
+// A zero-width line segment from v[0] to v[1] (the `.tri` format's `line`); its direction matters only at
+// its ends (docs/design.md).
+struct Segment {
+    std::array<Vertex, 2> v;
+    friend bool operator==(const Segment&, const Segment&) = default;
+};
+
 struct Viewport {
     int width = 0;
     int height = 0;
