@@ -1,0 +1,77 @@
+// Bresenham on the reference's hand cases (reference/tests/line_test.cpp), worked out again here: the
+// fast path is tested without the reference. The property test holds the two to each other.
+#include <rast/fast.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace rast::fast {
+namespace {
+
+Segment segment(double x0, double y0, double x1, double y1) { return {{Vertex{x0, y0, 0}, Vertex{x1, y1, 0}}}; }
+
+// Pixels as (i, j), ascending by j then i as the indices are.
+std::vector<std::pair<int, int>> lit(const Segment& s, int bits = 8) {
+    std::vector<std::pair<int, int>> out;
+    for (const std::size_t p : bresenham(s, Viewport{10, 10}, bits)) out.push_back({int(p % 10), int(p / 10)});
+    return out;
+}
+
+using Pixels = std::vector<std::pair<int, int>>;
+
+TEST(Bresenham, CentreToCentreLightsAllButTheEnd) {
+    EXPECT_EQ(lit(segment(0.5, 0.5, 4.5, 0.5)), (Pixels{{0, 0}, {1, 0}, {2, 0}, {3, 0}}));
+    EXPECT_EQ(lit(segment(4.5, 0.5, 0.5, 0.5)), (Pixels{{1, 0}, {2, 0}, {3, 0}, {4, 0}}));
+    EXPECT_EQ(lit(segment(0.5, 0.5, 0.5, 3.5)), (Pixels{{0, 0}, {0, 1}, {0, 2}}));
+    EXPECT_EQ(lit(segment(0.5, 3.5, 0.5, 0.5)), (Pixels{{0, 1}, {0, 2}, {0, 3}}));
+}
+
+// From the centre of (4, 4) by (3, 1) and its reflections: 1/3 from the centres passed.
+TEST(Bresenham, EveryOctant) {
+    EXPECT_EQ(lit(segment(4.5, 4.5, 7.5, 5.5)), (Pixels{{4, 4}, {5, 4}, {6, 5}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 5.5, 7.5)), (Pixels{{4, 4}, {4, 5}, {5, 6}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 3.5, 7.5)), (Pixels{{4, 4}, {4, 5}, {3, 6}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 1.5, 5.5)), (Pixels{{3, 4}, {4, 4}, {2, 5}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 1.5, 3.5)), (Pixels{{2, 3}, {3, 4}, {4, 4}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 3.5, 1.5)), (Pixels{{3, 2}, {4, 3}, {4, 4}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 5.5, 1.5)), (Pixels{{5, 2}, {4, 3}, {4, 4}}));
+    EXPECT_EQ(lit(segment(4.5, 4.5, 7.5, 3.5)), (Pixels{{6, 3}, {4, 4}, {5, 4}}));
+}
+
+// Through the bottom corners of row 1 (held) and the right corners of column 1 (held, y-major).
+TEST(Bresenham, ThroughCornersBetweenPixels) {
+    EXPECT_EQ(lit(segment(0.25, 1, 3.75, 1)), (Pixels{{0, 1}, {1, 1}, {2, 1}, {3, 1}}));
+    EXPECT_EQ(lit(segment(2, 0.25, 2, 3.75)), (Pixels{{1, 0}, {1, 1}, {1, 2}, {1, 3}}));
+    EXPECT_EQ(lit(segment(0, 0.5, 3, 3.5)), (Pixels{{0, 1}, {1, 2}, {2, 3}}));  // along diamond edges
+}
+
+// The ends: on the bottom corner, on the right corner by major axis, into an unheld corner along an edge.
+TEST(Bresenham, Ends) {
+    EXPECT_EQ(lit(segment(1.5, 1, 4.5, 1.75)), (Pixels{{1, 1}, {2, 1}, {3, 1}}));
+    EXPECT_EQ(lit(segment(4.5, 1.75, 1.5, 1)), (Pixels{{2, 1}, {3, 1}, {4, 1}}));
+    EXPECT_EQ(lit(segment(0.5, 1, 2, 1.5)), (Pixels{{0, 1}, {1, 1}}));  // x-major: the right corner is not held
+    EXPECT_EQ(lit(segment(1.5, 0, 2, 1.5)), (Pixels{{1, 0}}));          // y-major: it is
+    // Into (1, 1)'s left corner, not held; on the way it runs along (0, 2)'s lower-left edge, held.
+    EXPECT_EQ(lit(segment(0, 2.5, 1, 1.5)), (Pixels{{0, 2}}));
+    EXPECT_TRUE(lit(segment(2.5, 2.5, 2.5, 2.5)).empty());
+}
+
+// Ends are snapped first: 0.5 + 2^-10 is 0.5 on the 1/256 grid, 0.5 + 2^-9 rounds (a tie) to even, 0.5.
+TEST(Bresenham, SnapsTheEndsFirst) {
+    EXPECT_EQ(lit(segment(0.5 + 0x1p-10, 0.5, 4.5, 0.5)), lit(segment(0.5, 0.5, 4.5, 0.5)));
+    EXPECT_EQ(lit(segment(4.5, 0.5 + 0x1p-9, 0.5, 0.5)), lit(segment(4.5, 0.5, 0.5, 0.5)));
+}
+
+TEST(Bresenham, RefusesWhatItCannotDo) {
+    EXPECT_THROW(bresenham(segment(0, 0, 1, 1), Viewport{10, 10}, 0), std::invalid_argument);
+    EXPECT_THROW(bresenham(segment(0, 0, 1, 1), Viewport{10, 10}, 17), std::invalid_argument);
+    EXPECT_THROW(bresenham(segment(0, 0, 1, 1), Viewport{0, 10}), std::invalid_argument);
+    EXPECT_THROW(bresenham(segment(0, 0, 0x1p44, 1), Viewport{10, 10}), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace rast::fast
