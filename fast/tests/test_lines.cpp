@@ -1,9 +1,10 @@
-// Bresenham on the reference's hand cases (reference/tests/line_test.cpp), worked out again here: the
-// fast path is tested without the reference. The property test holds the two to each other.
+// Bresenham and the DDA on the reference's hand cases (reference/tests/line_test.cpp), worked out again
+// here: the fast path is tested without the reference. The property tests hold them to each other.
 #include <rast/fast.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -71,6 +72,42 @@ TEST(Bresenham, RefusesWhatItCannotDo) {
     EXPECT_THROW(bresenham(segment(0, 0, 1, 1), Viewport{10, 10}, 17), std::invalid_argument);
     EXPECT_THROW(bresenham(segment(0, 0, 1, 1), Viewport{0, 10}), std::invalid_argument);
     EXPECT_THROW(bresenham(segment(0, 0, 0x1p44, 1), Viewport{10, 10}), std::out_of_range);
+}
+
+// The hand cases whose slopes and positions every float type holds exactly (0, 1/2, 1, 3/2 and 3 steps):
+// the DDA's additions are exact there, and it lights what Bresenham lights.
+TEST(Dda, ExactWhereItsArithmeticIs) {
+    const std::vector<Segment> exact{segment(0.5, 0.5, 4.5, 0.5), segment(4.5, 0.5, 0.5, 0.5),
+                                     segment(0.5, 0.5, 0.5, 3.5), segment(0.25, 1, 3.75, 1),
+                                     segment(2, 0.25, 2, 3.75),   segment(0, 0.5, 3, 3.5),
+                                     segment(1.5, 1, 4.5, 2.5),   segment(0.5, 1, 2, 1.5),
+                                     segment(1.5, 0, 2, 1.5),     segment(0, 2.5, 1, 1.5)};
+    for (const Segment& s : exact)
+        for (const Precision p : {Precision::float32, Precision::float64})
+            EXPECT_EQ(dda(s, Viewport{10, 10}, p), bresenham(s, Viewport{10, 10}))
+                << s.v[0].x << "," << s.v[0].y << " to " << s.v[1].x << "," << s.v[1].y << " in " << name(p);
+}
+
+// Accumulated rounding. From the centre of (0, 0) to the centre of (10, 1) the slope is 1/10, which no
+// binary fraction is. The exact line meets y = 1 at x = 5.5, the bottom corner of pixel (5, 1), held:
+// the reference lights (5, 1). Adding the rounded slope five times to 1/2 gives 1 + 2^-23 in float
+// (floor 1, the same pixel) but 1 - 2^-53 in double (floor 0): float64 lights (5, 0) instead.
+TEST(Dda, RoundingMovesAPixel) {
+    const Segment s = segment(0.5, 0.5, 10.5, 1.5);
+    const Viewport vp{12, 4};
+    const auto exact = bresenham(s, vp);
+    EXPECT_NE(std::find(exact.begin(), exact.end(), std::size_t{1 * 12 + 5}), exact.end());
+    EXPECT_EQ(dda(s, vp, Precision::float32), exact);
+    auto moved = exact;
+    std::replace(moved.begin(), moved.end(), std::size_t{1 * 12 + 5}, std::size_t{0 * 12 + 5});
+    std::sort(moved.begin(), moved.end());
+    EXPECT_EQ(dda(s, vp, Precision::float64), moved);
+}
+
+TEST(Dda, RefusesWhatItCannotDo) {
+    EXPECT_THROW(dda(segment(0, 0, 1, 1), Viewport{10, 10}, Precision::fixed8), std::invalid_argument);
+    EXPECT_THROW(dda(segment(0, 0, std::nan(""), 1), Viewport{10, 10}), std::invalid_argument);
+    EXPECT_THROW(dda(segment(0, 0, 1, 1), Viewport{10, 0}), std::invalid_argument);
 }
 
 }  // namespace

@@ -138,4 +138,12 @@ std::array<double, 3> edge_error_bound_at(const Triangle& t, Precision precision
 // bits outside 1..16, std::out_of_range for a snapped coordinate beyond 2^(51 - bits) pixels.
 std::vector<std::size_t> bresenham(const Segment& s, Viewport vp, int bits = 8);
 
+// The same rule by the digital differential analyzer in float32 or float64: the ends rounded to that
+// type, the candidate across each column (or row) found by adding the slope once a step, the ends'
+// diamonds decided in that type. Rounding can move a pixel off the reference's; rast bench counts how
+// often. Any finite coordinate is accepted (past float range, float32 lights what its infinities give).
+// Throws std::invalid_argument for a viewport outside the limits above, a coordinate that is not finite,
+// or a fixed-point precision (bresenham is that line).
+std::vector<std::size_t> dda(const Segment& s, Viewport vp, Precision precision = Precision::float32);
+
 }  // namespace rast::fast
