@@ -3,6 +3,7 @@
 #include <rast/bench_run.h>
 
 #include "engine_error.h"
+#include "line_bench.h"
 #include "llvmpipe_timing.h"
 #include "timing.h"
 
@@ -42,11 +43,12 @@ struct Plan {
     std::size_t hard_triangles;
     Viewport aa_viewport;
     std::size_t aa_triangles;
+    double line_budget;  // pixels of segment length per line scene
 };
 
 Plan plan_for(bool quick) {
-    if (quick) return {{256, 256}, 1, 3, {64, 64}, 100, {64, 64}, 20};
-    return {{1024, 1024}, 20, 9, {256, 256}, 2000, {256, 256}, 300};
+    if (quick) return {{256, 256}, 1, 3, {64, 64}, 100, {64, 64}, 20, 2e4};
+    return {{1024, 1024}, 20, 9, {256, 256}, 2000, {256, 256}, 300, 4e5};
 }
 
 struct BenchScene {
@@ -344,6 +346,18 @@ Report run_bench(const Config& config, std::ostream& progress) {
         progress << "[antialiasing] visible area of the bunny at " << large.width << "x" << large.height << '\n';
         time_visible_area(bunny.info.name + " " + std::to_string(large.width) + "x" + std::to_string(large.height),
                           bunny.scene, report);
+    }
+    if (config.lines) {
+        // Segments of three lengths, random in position and direction, the same set for every engine.
+        const Viewport vp = plan.viewport;
+        const std::pair<const char*, double> lengths[] = {{"short lines (4 px)", 4}, {"medium lines (32 px)", 32},
+                                                          {"long lines (256 px)", 256}};
+        for (const auto& [name, length] : lengths) {
+            const std::size_t n = static_cast<std::size_t>(plan.line_budget / length);
+            const std::vector<Segment> segments = make_segments(n, length, vp);
+            for (LineRow& row : measure_lines(name, segments, vp, plan.runs, progress))
+                report.lines.push_back(std::move(row));
+        }
     }
     report.machine.load_after = load_average();
     return report;

@@ -258,4 +258,16 @@ std::string describe(const SceneSpec& spec) {
            std::to_string(spec.seed);
 }
 
+std::vector<Segment> make_segments(std::size_t n, double length, Viewport viewport, std::uint64_t seed) {
+    Random r(seed);
+    std::vector<Segment> out;
+    out.reserve(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const double x = r.uniform(0, viewport.width), y = r.uniform(0, viewport.height);
+        const double angle = r.uniform(0, 2 * kPi);
+        out.push_back({{Vertex{x, y, 0}, Vertex{x + length * std::cos(angle), y + length * std::sin(angle), 0}}});
+    }
+    return out;
+}
+
 }  // namespace rast::bench

@@ -64,6 +64,12 @@ std::string format_json(const Report& report) {
                         {"viewport", {c.viewport.width, c.viewport.height}}, {"pixels_cut", c.stats.pixels_cut},
                         {"candidates", c.stats.candidates}, {"threads", c.threads}, {"seconds", c.seconds}});
     }
+    json lines = json::array();
+    for (const LineRow& l : report.lines) {
+        lines.push_back({{"scene", l.scene}, {"engine", l.engine}, {"segments", l.segments}, {"median_s", l.median},
+                         {"min_s", l.min}, {"max_s", l.max}, {"runs", l.runs}, {"pixels", l.pixels},
+                         {"pixels_differing", l.differing}, {"segments_affected", l.segments_affected}});
+    }
     const Machine& m = report.machine;
     const json out = {
         {"machine", {{"cpu", m.cpu}, {"cores", m.cores}, {"load_before", m.load_before},
@@ -80,6 +86,7 @@ std::string format_json(const Report& report) {
         {"halfplane_discrepancy", discrepancy},
         {"visible_antialiasing", visible},
         {"visible_area_cost", cost},
+        {"lines", lines},
         {"notes", report.notes},
     };
     return out.dump(2) + "\n";

@@ -121,6 +121,24 @@ std::string visible_tables(const Report& report) {
     return out;
 }
 
+std::string lines_table(const std::vector<LineRow>& lines) {
+    std::map<std::string, double> reference;
+    for (const LineRow& l : lines)
+        if (l.engine == "reference") reference[l.scene] = l.median;
+    std::string out = row({"scene", "engine", "segments", "median ms", "min–max ms", "M lines/s", "vs reference",
+                           "pixels lit (reference)", "pixels differing", "segments affected"}) +
+                      row({"---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:", "---:"});
+    for (const LineRow& l : lines) {
+        const auto it = reference.find(l.scene);
+        out += row({l.scene, l.engine, std::to_string(l.segments), number(l.median * 1e3),
+                    number(l.min * 1e3) + "–" + number(l.max * 1e3),
+                    number(static_cast<double>(l.segments) / l.median / 1e6),
+                    it == reference.end() ? "—" : number(it->second / l.median) + "×", std::to_string(l.pixels),
+                    std::to_string(l.differing), std::to_string(l.segments_affected)});
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string format_table(const Report& report) {
@@ -158,6 +176,13 @@ std::string format_table(const Report& report) {
                "in [0, 1]. Pixels where something is seen or covered. Beside it, the depth-ignoring error of\n"
                "each triangle's own area (the table above), which misses what occlusion does.\n\n" +
                visible_tables(report);
+    }
+    if (!report.lines.empty()) {
+        out += "\n### Lines\n\n"
+               "Each engine over every segment of a set, one thread; pixels against the exact diamond-exit rule\n"
+               "on the same segments (Bresenham snaps the ends to 1/256 pixel first, and equals the reference on\n"
+               "the snapped segment; what differs here is the snapping).\n\n" +
+               lines_table(report.lines);
     }
     for (const std::string& note : report.notes) out += "\nNote: " + note + "\n";
     return out;

@@ -87,6 +87,7 @@ void run(const BenchOptions& o) {
         config.speed = chosen("speed");
         config.hard = chosen("hard");
         config.aa = chosen("aa");
+        config.lines = chosen("lines");
     }
     config.mesh = o.mesh;
     config.command = command_line(o);
@@ -112,10 +113,11 @@ void add_bench_command(CLI::App& app) {
         "Time every engine (reference; fast fixed4/8/16, float32/64 on 1 and 2 threads; llvmpipe) on the\n"
         "same scenes and measure each one's error against the exact reference; hard-case families; the\n"
         "antialiasing error of 1/4/8/16 samples against the exact area and, z-buffered, against the exact\n"
-        "visible area. Progress on stderr, tables on stdout.");
+        "visible area; lines by the exact diamond-exit rule, Bresenham and the DDA. Progress on stderr,\n"
+        "tables on stdout.");
     bench->add_flag("--quick", options->quick, "Small scenes and few runs: under a minute (CI smoke test)");
     CLI::Option* only = bench->add_option("--only", options->only, "Run only these sections")
-                            ->check(CLI::IsMember({"speed", "hard", "aa"}));
+                            ->check(CLI::IsMember({"speed", "hard", "aa", "lines"}));
     // Only the speed and antialiasing sections render the mesh: with neither, it would be ignored. Parsing
     // has read every argument before any option is checked, so --only's values are there to look at.
     const auto rendered = [only](const std::string&) -> std::string {

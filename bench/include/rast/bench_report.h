@@ -73,6 +73,18 @@ struct VisibleCostRow {
     double seconds = 0;  // wall time of one reference::visible_area
 };
 
+// Lines: one engine on one set of segments, timed over the whole set, and its pixels against the
+// reference's for the same (unsnapped) segments.
+struct LineRow {
+    std::string scene, engine;
+    std::size_t segments = 0;
+    double median = 0, min = 0, max = 0;  // seconds per pass over every segment
+    std::size_t runs = 0;
+    std::uint64_t pixels = 0;             // lit by the reference
+    std::uint64_t differing = 0;          // lit by one of the two only
+    std::uint64_t segments_affected = 0;  // segments with a differing pixel
+};
+
 struct Report {
     Machine machine;
     std::string command;
@@ -87,6 +99,7 @@ struct Report {
     std::vector<std::pair<int, Discrepancy>> discrepancy;  // per sample count
     std::vector<VisibleAaRow> visible_aa;                  // z-buffered: against the exact visible area
     std::vector<VisibleCostRow> visible_cost;
+    std::vector<LineRow> lines;
     std::vector<std::string> notes;    // what was skipped, and why
 };
 

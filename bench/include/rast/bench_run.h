@@ -16,6 +16,7 @@ struct Config {
     bool speed = true;   // speed and error of every engine on the main scenes
     bool hard = true;    // the hard-case families
     bool aa = true;      // the sample patterns against the exact area
+    bool lines = true;   // line rasterizers: speed and pixels against the exact diamond-exit rule
     std::filesystem::path mesh;  // the real mesh; the Stanford bunny in meshes/bunny.off
     std::string command;         // as typed, recorded in the report
     // Plugins timed and compared beside rast's engines on the speed and hard-case scenes whose sample

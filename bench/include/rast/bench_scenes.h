@@ -61,4 +61,8 @@ std::string_view name(Depth depth);
 // A short, unique label, e.g. "small/n:10000/1024x1024/grid256/separated/seed:1".
 std::string describe(const SceneSpec& spec);
 
+// n segments of the given length in pixels, each in a uniformly random direction, starting uniformly
+// inside the viewport (so some run out of it); arbitrary doubles, z 0.
+std::vector<Segment> make_segments(std::size_t n, double length, Viewport viewport, std::uint64_t seed = 1);
+
 }  // namespace rast::bench
