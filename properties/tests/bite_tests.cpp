@@ -105,17 +105,24 @@ protected:
     std::filesystem::path corpus_;
 };
 
+// The search every bite runs, 300 cases from a fixed seed (the test is about this search, not a lucky
+// one); whether it failed.
+template <class Testable>
+bool search_fails(const std::string& id, Testable testable) {
+    rc::detail::TestMetadata metadata;
+    metadata.id = id;
+    rc::detail::TestParams params;
+    params.seed = 20261121;
+    params.maxSuccess = 300;
+    return rc::detail::checkTestable(testable, metadata, params).template is<rc::detail::FailureResult>();
+}
+
 TEST_P(Bites, PropertyFailsAndKeepsItsCounterexample) {
     const Bite& b = GetParam();
     const std::vector<Engine> engine{broken(b)};
-    rc::detail::TestMetadata metadata;
-    metadata.id = std::string("Bites/") + b.name;
-    rc::detail::TestParams params;
-    params.seed = 20261121;  // fixed: the test is about this search, not a lucky one
-    params.maxSuccess = 300;
-    const auto result = rc::detail::checkTestable(
-        [&] { rast::harness::hold(b.property, *rast::gen::scenes_for(b.property), engine); }, metadata, params);
-    ASSERT_TRUE(result.is<rc::detail::FailureResult>()) << b.property << " did not detect " << b.name;
+    ASSERT_TRUE(search_fails(std::string("Bites/") + b.name,
+                             [&] { rast::harness::hold(b.property, *rast::gen::scenes_for(b.property), engine); }))
+        << b.property << " did not detect " << b.name;
 
     // The minimal counterexample was kept where RAST_CORPUS_OUT says, naming the property it breaks.
     ASSERT_TRUE(std::filesystem::is_directory(corpus_));
@@ -201,19 +208,10 @@ rast::reference::VisibleArea ties_to_the_higher_id(const Scene& s) {
 
 // visible_area judges the reference's own visible area, not an engine: it bites a broken one.
 TEST(Bites, VisibleAreaCatchesTiesToTheHigherId) {
-    rc::detail::TestMetadata metadata;
-    metadata.id = "Bites/visible_area_ties_to_the_higher_id";
-    rc::detail::TestParams params;
-    params.seed = 20261121;
-    params.maxSuccess = 300;
-    const auto result = rc::detail::checkTestable(
-        [] {
-            const Scene scene = *rast::gen::scenes_for("visible_area");
-            const auto outcome = rast::properties::visible_area_of(scene, ties_to_the_higher_id);
-            RC_ASSERT(!outcome.failed());
-        },
-        metadata, params);
-    EXPECT_TRUE(result.is<rc::detail::FailureResult>());
+    EXPECT_TRUE(search_fails("Bites/visible_area_ties_to_the_higher_id", [] {
+        const Scene scene = *rast::gen::scenes_for("visible_area");
+        RC_ASSERT(!rast::properties::visible_area_of(scene, ties_to_the_higher_id).failed());
+    }));
 }
 
 // Every property is bitten by at least one broken variant above.
