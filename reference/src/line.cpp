@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace rast::reference {
 
@@ -106,23 +108,35 @@ bool is_y_major(const Segment& s) {
     return ey > ex;
 }
 
-}  // namespace
+void require_finite(const Segment& s) {
+    for (int e = 0; e < 2; ++e)
+        if (!std::isfinite(s.v[e].x) || !std::isfinite(s.v[e].y) || !std::isfinite(s.v[e].z))
+            throw std::invalid_argument("segment end " + std::to_string(e) + " (" + std::to_string(s.v[e].x) + ", " +
+                                        std::to_string(s.v[e].y) + ", " + std::to_string(s.v[e].z) +
+                                        ") has a coordinate that is not finite");
+}
 
-bool lights(const Segment& s, int i, int j) {
-    detail::require_finite(Triangle{{s.v[0], s.v[1], s.v[1]}});
-    const Point p(s.v[0].x, s.v[0].y), q(s.v[1].x, s.v[1].y);
-    if (p == q) return false;
-    const bool y_major = is_y_major(s);
+// The rule for a segment pq of non-zero length.
+bool lights(const Point& p, const Point& q, bool y_major, int i, int j) {
     const Diamond d(i, j);
     if (holds(d, q, y_major)) return false;  // it ends inside: it never leaves
     return holds(d, p, y_major) || crosses_interior(d, p, q) || meets_lower_edges(d, p, q, y_major);
 }
 
+}  // namespace
+
+bool lights(const Segment& s, int i, int j) {
+    require_finite(s);
+    const Point p(s.v[0].x, s.v[0].y), q(s.v[1].x, s.v[1].y);
+    return p != q && lights(p, q, is_y_major(s), i, j);
+}
+
 std::vector<std::size_t> lit_pixels(const Segment& s, Viewport vp) {
     detail::require_valid(vp, 1);
-    detail::require_finite(Triangle{{s.v[0], s.v[1], s.v[1]}});
+    require_finite(s);
     std::vector<std::size_t> lit;
-    if (s.v[0].x == s.v[1].x && s.v[0].y == s.v[1].y) return lit;
+    const Point p(s.v[0].x, s.v[0].y), q(s.v[1].x, s.v[1].y);
+    if (p == q) return lit;
     // Along the major axis, pixel by pixel: the segment's other coordinate over that pixel's span, in
     // interval arithmetic, bounds the pixels across it whose closed square it can meet.
     const bool y_major = is_y_major(s);
@@ -140,7 +154,7 @@ std::vector<std::size_t> lit_pixels(const Segment& s, Viewport vp) {
         const auto [m0, m1] = detail::clamped_span(b_lo, b_hi, n_across);
         for (int m = m0; m <= m1; ++m) {
             const int i = y_major ? m : k, j = y_major ? k : m;
-            if (lights(s, i, j))
+            if (lights(p, q, y_major, i, j))
                 lit.push_back(static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width) + static_cast<std::size_t>(i));
         }
     }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -115,7 +116,10 @@ Row cut_row(int j, int width, const std::vector<const Candidate*>& in_row) {
         order.clear();
         const double x = i + 0.5, y = j + 0.5;
         for (const Candidate* c : in_row) {
-            if (c->columns.first <= i && i <= c->columns.second) order.emplace_back(c->za * x + c->zb * y + c->zc, &c->cutter);
+            if (c->columns.first > i || i > c->columns.second) continue;
+            // Far beyond double's range the rough depth can be NaN; sorting needs an order, so it goes last.
+            const double z = c->za * x + c->zb * y + c->zc;
+            order.emplace_back(std::isnan(z) ? std::numeric_limits<double>::infinity() : z, &c->cutter);
         }
         if (order.empty()) continue;
         ++row.stats.pixels_cut;

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <stdexcept>
 #include <set>
 #include <utility>
 #include <vector>
@@ -84,6 +86,11 @@ TEST(Line, TouchingOnlyAnUnheldCornerAlongAnEdge) {
     EXPECT_TRUE(lights(segment(0, 2.5, 2, 0.5), 1, 1));
     EXPECT_TRUE(lights(segment(1, 0.5, 3, 2.5), 1, 1));
     EXPECT_FALSE(lights(segment(0, 2.5, 1.25, 1.25), 1, 1));
+}
+
+TEST(Line, ANonFiniteEndIsRefused) {
+    EXPECT_THROW(lights(segment(0, 0, INFINITY, 1), 0, 0), std::invalid_argument);
+    EXPECT_THROW(lit_pixels(segment(NAN, 0, 1, 1), Viewport{10, 10}), std::invalid_argument);
 }
 
 TEST(Line, ZeroLengthLightsNothing) {
