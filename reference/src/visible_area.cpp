@@ -24,6 +24,7 @@ namespace rast::reference {
 
 VisibleArea::VisibleArea(Viewport viewport, std::vector<std::size_t> first, std::vector<VisiblePiece> pieces)
     : viewport_(viewport), first_(std::move(first)), pieces_(std::move(pieces)) {
+    detail::require_valid(viewport, 1);
     const std::size_t pixels = static_cast<std::size_t>(viewport.width) * static_cast<std::size_t>(viewport.height);
     if (first_.size() != pixels + 1 || first_.front() != 0 || first_.back() != pieces_.size() ||
         !std::is_sorted(first_.begin(), first_.end()))
@@ -36,6 +37,10 @@ std::span<const VisiblePiece> VisibleArea::at(int i, int j) const {
 }
 
 std::vector<VisiblePiece> visible_in_pixel(const Scene& scene, int i, int j, std::span<const std::size_t> order) {
+    detail::require_valid(scene.viewport, 1);
+    if (i < 0 || i >= scene.viewport.width || j < 0 || j >= scene.viewport.height)
+        throw std::invalid_argument("rast::reference::visible_in_pixel: pixel (" + std::to_string(i) + ", " +
+                                    std::to_string(j) + ") is outside the viewport");
     std::vector<detail::Cutter> cutters;
     cutters.reserve(order.size());
     std::vector<bool> named(scene.triangles.size());
@@ -53,6 +58,7 @@ std::vector<VisiblePiece> visible_in_pixel(const Scene& scene, int i, int j, std
 }
 
 Rational resolve_error(std::span<const VisiblePiece> visible, std::span<const std::int32_t> sample_ids) {
+    if (sample_ids.empty()) throw std::invalid_argument("rast::reference::resolve_error: a pixel without samples");
     // Owner -> its sample fraction minus its area.
     std::map<std::int64_t, Rational> difference;
     Rational nothing(1);

@@ -171,6 +171,39 @@ TEST(VisibleArea, OnePixelWithTheTrianglesNamed) {
     EXPECT_EQ(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{}), Pieces{});
     EXPECT_THROW(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{2}), std::invalid_argument);
     EXPECT_THROW(visible_in_pixel(s, 0, 0, std::vector<std::size_t>{0, 0}), std::invalid_argument);
+    EXPECT_THROW(visible_in_pixel(s, 1, 0, std::vector<std::size_t>{0}), std::invalid_argument);
+    EXPECT_THROW(visible_in_pixel(s, 0, -1, std::vector<std::size_t>{0}), std::invalid_argument);
+}
+
+// Offsets that do not fit the viewport or the pieces, and a viewport of no pixels, are refused.
+TEST(VisibleArea, ItsPartsMustFit) {
+    EXPECT_THROW(VisibleArea(Viewport{-1, -1}, {0, 0}, {}), std::invalid_argument);
+    EXPECT_THROW(VisibleArea(Viewport{0, 5}, {0}, {}), std::invalid_argument);
+    EXPECT_THROW(VisibleArea(Viewport{1, 1}, {0, 1}, {}), std::invalid_argument);
+    EXPECT_NO_THROW(VisibleArea(Viewport{1, 1}, {0, 0}, {}));
+}
+
+// Planes so steep that their slopes overflow double: the rough front-to-back key is then NaN, which
+// must still give an order (the areas are exact whatever the order).
+TEST(VisibleArea, PlanesBeyondDoublesRange) {
+    Scene s{Viewport{4, 4}, 1, {}};
+    for (int k = 0; k < 40; ++k) {
+        const double x0 = 2 + k * 0x1p-45, dx = 0x1p-40;
+        s.triangles.push_back(Triangle{{Vertex{x0, -1, 0}, Vertex{x0 + dx, -1, (k % 2 ? 1 : -1) * 1.7e308},
+                                        Vertex{x0, 5, (k % 3) * 5e307}}});
+    }
+    const VisibleArea area = visible_area(s);
+    std::vector<std::size_t> order(s.triangles.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = order.size() - 1 - k;
+    for (int j = 0; j < 4; ++j) {
+        const auto expected = visible_in_pixel(s, 2, j, order);
+        const auto got = area.at(2, j);
+        EXPECT_TRUE(std::equal(got.begin(), got.end(), expected.begin(), expected.end())) << j;
+    }
+}
+
+TEST(VisibleArea, ResolveErrorNeedsSamples) {
+    EXPECT_THROW(resolve_error(Pieces{}, std::vector<std::int32_t>{}), std::invalid_argument);
 }
 
 }  // namespace

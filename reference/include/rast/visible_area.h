@@ -26,11 +26,13 @@ struct VisiblePiece {
 
 class VisibleArea {
 public:
+    // Pixel p's pieces are pieces[first[p]] .. pieces[first[p + 1] - 1], bottom row first. Throws
+    // std::invalid_argument for a viewport outside the limits or offsets that do not match the pieces.
     VisibleArea(Viewport viewport, std::vector<std::size_t> first, std::vector<VisiblePiece> pieces);
 
     Viewport viewport() const { return viewport_; }
-    // The visible triangles of pixel (i, j), ids ascending, each with a non-zero area; their areas sum
-    // to the area of the union of the triangles inside the pixel.
+    // The visible triangles of pixel (i, j), within the viewport: ids ascending, each with a non-zero area;
+    // their areas sum to the area of the union of the triangles inside the pixel.
     std::span<const VisiblePiece> at(int i, int j) const;
 
 private:
@@ -41,14 +43,15 @@ private:
 
 // The visible areas of pixel (i, j) alone, cutting with the triangles `order` names, in that order (each
 // id at most once; a triangle left out is not there). visible_area inserts them roughly front to back;
-// any order gives the same areas, which a property holds. Throws std::invalid_argument for an id out of
-// range or named twice, or a coordinate that is not finite.
+// any order gives the same areas, which a property holds. Throws std::invalid_argument for a pixel
+// outside the viewport, an id out of range or named twice, or a coordinate that is not finite.
 std::vector<VisiblePiece> visible_in_pixel(const Scene& scene, int i, int j, std::span<const std::size_t> order);
 
 // How far a pixel's samples are from its visible areas: the total variation distance between the
 // fraction of the samples each owner holds (`sample_ids`, -1 for none) and the area it sees (nothing seen
 // owning what is left). It is the largest error the resolved colour of the pixel can have, when colours
-// lie in [0, 1]: the average over samples against the average over the area.
+// lie in [0, 1]: the average over samples against the average over the area. Throws
+// std::invalid_argument for no samples.
 Rational resolve_error(std::span<const VisiblePiece> visible, std::span<const std::int32_t> sample_ids);
 
 // What the cutting had to do: how the cost grows with the triangles that reach a pixel.
