@@ -37,11 +37,10 @@ struct GridPoint {
     std::int64_t along, across;
 };
 
-// Whether the diamond of the pixel (k along, m across) holds p: inside, or on its held boundary. In
-// x-major terms the held parts are the lower edges and the bottom corner (across < centre); swapped, for
-// a y-major segment, the lower edges are the left and lower ones of the transposed picture, so the held
-// parts are the two edges and corner below the centre in y (across is x there, along is y: "below"
-// becomes along < centre) and the right corner (across > centre on the diagonal).
+// Whether the diamond of the pixel (k along, m across) holds p: inside, or on its held boundary (the two
+// lower edges and the bottom corner; the right corner too for a y-major segment). For an x-major
+// segment across is y, so "lower" is across < centre. For a y-major one along is y and across is x:
+// "lower" is along < centre, and the right corner is along = centre, across > centre.
 bool holds(GridPoint p, std::int64_t k, std::int64_t m, std::int64_t unit, bool y_major) {
     const std::int64_t half = unit / 2;
     const std::int64_t da = p.along - (k * unit + half), dc = p.across - (m * unit + half);

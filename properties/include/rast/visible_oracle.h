@@ -38,7 +38,10 @@ int cells_met_by_boundaries(const Scene& scene, int i, int j, int columns, int r
 // lies inside one owner's region with its sample, so it adds the same to that owner's sample fraction
 // and its area; any other cell moves at most 1/N of each. So the total variation distance between the
 // sample fractions and the visible areas (over the owners and "nothing"), which is the largest error
-// the resolved colour can have for colours in [0, 1], is at most (cells met) / N.
+// the resolved colour can have for colours in [0, 1], is at most (cells met) / N. The boundaries counted
+// are those of the triangles whose box meets the open pixel square. A triangle that only touches the
+// square from outside can own none of its samples: the samples on the square's border (16x only) lie on
+// its left and top sides, where such a triangle has a right or bottom edge, which the tie rule leaves.
 std::pair<int, int> sample_cells(int samples);
 
 // The triangle that holds all of the closed pixel square (i, j) and is in front of every other triangle
