@@ -17,25 +17,27 @@ struct Region {
     const Cutter* owner;  // nullptr: nothing is visible there
 };
 
-// Cuts a convex polygon along f = 0 into the closed parts f <= 0 and f >= 0. A part is left empty when
-// it would have no area: exactly when no vertex lies strictly on its side.
-void cut(const Polygon& polygon, const Affine& f, Polygon& below, Polygon& above) {
+// Cuts a convex polygon along f = 0 into the closed parts f <= 0 and f >= 0, taking the polygon. A part
+// is left empty when it would have no area: exactly when no vertex lies strictly on its side. A polygon
+// wholly on one side moves there, uncopied: most cuts leave it whole.
+void cut(Polygon&& polygon, const Affine& f, Polygon& below, Polygon& above) {
     below.clear();
     above.clear();
-    std::vector<Rational> value;
-    value.reserve(polygon.size());
+    // The values at the vertices, kept from cut to cut in this thread: their digits stay allocated.
+    thread_local std::vector<Rational> value;
+    if (value.size() < polygon.size()) value.resize(polygon.size());
     bool any_below = false, any_above = false;
-    for (const RationalPoint& p : polygon) {
-        value.push_back(f.at(p));
-        any_below = any_below || value.back() < 0;
-        any_above = any_above || value.back() > 0;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        value[k] = f.at(polygon[k]);
+        any_below = any_below || value[k] < 0;
+        any_above = any_above || value[k] > 0;
     }
     if (!any_above) {
-        below = polygon;
+        below = std::move(polygon);
         return;
     }
     if (!any_below) {
-        above = polygon;
+        above = std::move(polygon);
         return;
     }
     for (std::size_t k = 0; k < polygon.size(); ++k) {
@@ -81,8 +83,8 @@ void insert(std::vector<Region>& map, const Cutter& t) {
         }
         rest = std::move(region.polygon);
         for (const Affine& edge : t.edges) {
-            cut(rest, edge, outside, inside);
-            if (!outside.empty()) next.push_back({outside, region.owner});
+            cut(std::move(rest), edge, outside, inside);
+            if (!outside.empty()) next.push_back({std::move(outside), region.owner});
             std::swap(rest, inside);
             if (rest.empty()) break;
         }
@@ -96,9 +98,9 @@ void insert(std::vector<Region>& map, const Cutter& t) {
             next.push_back({std::move(rest), t.id < region.owner->id ? &t : region.owner});
             continue;
         }
-        cut(rest, d, inside, outside);  // inside: t is nearer
-        if (!inside.empty()) next.push_back({inside, &t});
-        if (!outside.empty()) next.push_back({outside, region.owner});
+        cut(std::move(rest), d, inside, outside);  // inside: t is nearer
+        if (!inside.empty()) next.push_back({std::move(inside), &t});
+        if (!outside.empty()) next.push_back({std::move(outside), region.owner});
     }
     map = std::move(next);
 }
