@@ -9,6 +9,7 @@
 // candidate i = ceil(x(j + 1/2)) - 1.
 #include <rast/fast.h>
 
+#include "line_diamond.h"
 #include "snap.h"
 
 #include <rast/scene_limits.h>
@@ -37,18 +38,10 @@ struct GridPoint {
     std::int64_t along, across;
 };
 
-// Whether the diamond of the pixel (k along, m across) holds p: inside, or on its held boundary (the two
-// lower edges and the bottom corner; the right corner too for a y-major segment). For an x-major
-// segment across is y, so "lower" is across < centre. For a y-major one along is y and across is x:
-// "lower" is along < centre, and the right corner is along = centre, across > centre.
+// Whether the diamond of the pixel (k along, m across) holds p.
 bool holds(GridPoint p, std::int64_t k, std::int64_t m, std::int64_t unit, bool y_major) {
     const std::int64_t half = unit / 2;
-    const std::int64_t da = p.along - (k * unit + half), dc = p.across - (m * unit + half);
-    const std::int64_t d = (da < 0 ? -da : da) + (dc < 0 ? -dc : dc);
-    if (d < half) return true;
-    if (d > half) return false;
-    if (!y_major) return dc < 0;          // y = across: below the centre
-    return da < 0 || (da == 0 && dc > 0);  // y = along: below the centre; or the right corner
+    return detail::diamond_holds(p.along - (k * unit + half), p.across - (m * unit + half), half, y_major);
 }
 
 // The pixel whose diamond holds p, if any: the pixel square containing p, or, for a y-major segment,

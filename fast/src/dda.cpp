@@ -5,6 +5,8 @@
 // than the exact line, a pixel differs from the reference: rast bench counts how often.
 #include <rast/fast.h>
 
+#include "line_diamond.h"
+
 #include <rast/scene_limits.h>
 
 #include <algorithm>
@@ -22,15 +24,11 @@ struct Point {
     T along, across;
 };
 
-// Whether the diamond of pixel (k along, m across) holds p, as bresenham.cpp's holds, in T.
+// Whether the diamond of pixel (k along, m across) holds p, decided in T.
 template <class T>
 bool holds(Point<T> p, double k, double m, bool y_major) {
-    const T da = p.along - static_cast<T>(k + 0.5), dc = p.across - static_cast<T>(m + 0.5);
-    const T d = std::abs(da) + std::abs(dc);
-    if (d < T(0.5)) return true;
-    if (d > T(0.5)) return false;
-    if (!y_major) return dc < 0;
-    return da < 0 || (da == 0 && dc > 0);
+    return detail::diamond_holds<T>(p.along - static_cast<T>(k + 0.5), p.across - static_cast<T>(m + 0.5), T(0.5),
+                                    y_major);
 }
 
 template <class T>
