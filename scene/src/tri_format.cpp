@@ -114,6 +114,15 @@ TriDocument read_tri_document(std::istream& in, const std::string& name) {
                 t.v[k].z = detail::parse_finite_double(tokens[3 + 3 * k], name, line_number);
             }
             doc.scene.triangles.push_back(t);
+        } else if (keyword == "line") {
+            expect_arity(tokens, 6, "6 numbers (two ends x y z)", name, line_number);
+            Segment segment;
+            for (int k = 0; k < 2; ++k) {
+                segment.v[k].x = detail::parse_finite_double(tokens[1 + 3 * k], name, line_number);
+                segment.v[k].y = detail::parse_finite_double(tokens[2 + 3 * k], name, line_number);
+                segment.v[k].z = detail::parse_finite_double(tokens[3 + 3 * k], name, line_number);
+            }
+            append_line(doc.scene, segment);
         } else if (keyword == "viewport") {
             if (viewport_line != 0)
                 throw ParseError(name, line_number,
@@ -132,7 +141,7 @@ TriDocument read_tri_document(std::istream& in, const std::string& name) {
             samples_line = line_number;
         } else {
             throw ParseError(name, line_number,
-                             "unknown keyword " + quote_token(keyword) + " (expected viewport, samples or tri)");
+                             "unknown keyword " + quote_token(keyword) + " (expected viewport, samples, tri or line)");
         }
     }
     if (in.bad()) throw ParseError(name, 0, "read error after line " + std::to_string(line_number));
@@ -179,21 +188,33 @@ void write_tri(std::ostream& out, const Scene& scene, const TriHeader& header) {
             throw std::invalid_argument("write_tri: the value of header key '" + key +
                                         "' has a line feed, a carriage return or surrounding blanks");
     }
-    for (std::size_t id = 0; id < scene.triangles.size(); ++id)
-        for (const Vertex& v : scene.triangles[id].v)
+    const std::vector<std::int32_t> ids = triangle_ids(scene);
+    const auto finite = [](const auto& vertices, const char* what, std::size_t index) {
+        for (const Vertex& v : vertices)
             if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-                throw std::invalid_argument("write_tri: triangle " + std::to_string(id) +
+                throw std::invalid_argument(std::string("write_tri: ") + what + " " + std::to_string(index) +
                                             " has a non-finite coordinate");
+    };
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) finite(scene.triangles[k].v, "triangle", k);
+    for (std::size_t k = 0; k < scene.lines.size(); ++k) finite(scene.lines[k].segment.v, "line", k);
 
     std::string text;
     for (const auto& [key, value] : header) text += "# " + key + ":" + (value.empty() ? "" : " " + value) + "\n";
     text += "viewport " + std::to_string(scene.viewport.width) + " " + std::to_string(scene.viewport.height) + "\n";
     text += "samples " + std::to_string(scene.samples) + "\n";
-    for (const Triangle& t : scene.triangles) {
-        text += "tri";
-        for (const Vertex& v : t.v) text += "  " + hex_float(v.x) + " " + hex_float(v.y) + " " + hex_float(v.z);
+    const auto statement = [&text](const char* keyword, const auto& vertices) {
+        text += keyword;
+        for (const Vertex& v : vertices) text += "  " + hex_float(v.x) + " " + hex_float(v.y) + " " + hex_float(v.z);
         text += "\n";
+    };
+    // In id order, so that the file gives every triangle and line its id back.
+    std::size_t line = 0;
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
+        for (; line < scene.lines.size() && scene.lines[line].id < ids[k]; ++line)
+            statement("line", scene.lines[line].segment.v);
+        statement("tri", scene.triangles[k].v);
     }
+    for (; line < scene.lines.size(); ++line) statement("line", scene.lines[line].segment.v);
     if (!(out << text)) throw std::runtime_error("write_tri: the output stream failed");
 }
 

@@ -230,12 +230,57 @@ TEST(TriFormat, HeaderIsTheLeadingKeyValueComments) {
 
 TEST(TriFormat, RejectsUnknownKeyword) {
     EXPECT_EQ(error_of("viewport 4 4\ntriangle 0 0 0 1 0 0 0 1 0\n"),
-              "s.tri:2: unknown keyword 'triangle' (expected viewport, samples or tri)");
+              "s.tri:2: unknown keyword 'triangle' (expected viewport, samples, tri or line)");
     EXPECT_EQ(error_of(std::string("viewport 4 4\n\x01\x00z\n", 16)),
-              "s.tri:2: unknown keyword '\\x01\\x00z' (expected viewport, samples or tri)");
+              "s.tri:2: unknown keyword '\\x01\\x00z' (expected viewport, samples, tri or line)");
+}
+
+// Ids count tri and line statements together in file order; the writer gives every one its id back.
+TEST(TriFormat, LinesShareIdsWithTrianglesInFileOrder) {
+    const Scene s = parse("viewport 4 4\nline 0 0 1  4 4 2\ntri 0 0 0 1 0 0 0 1 0\nline 0.5 0x1p-1 0 1e0 3 -2\n"
+                          "tri 1 1 1 2 1 1 1 2 1\n");
+    ASSERT_EQ(s.lines.size(), 2u);
+    EXPECT_EQ(s.lines[0], (Line{Segment{{{{0, 0, 1}, {4, 4, 2}}}}, 0}));
+    EXPECT_EQ(s.lines[1], (Line{Segment{{{{0.5, 0.5, 0}, {1, 3, -2}}}}, 2}));
+    EXPECT_EQ(triangle_ids(s), (std::vector<std::int32_t>{1, 3}));
+    std::ostringstream out;
+    write_tri(out, s);
+    EXPECT_EQ(out.str(),
+              "viewport 4 4\n"
+              "samples 1\n"
+              "line  0x0p+0 0x0p+0 0x1p+0  0x1p+2 0x1p+2 0x1p+1\n"
+              "tri  0x0p+0 0x0p+0 0x0p+0  0x1p+0 0x0p+0 0x0p+0  0x0p+0 0x1p+0 0x0p+0\n"
+              "line  0x1p-1 0x1p-1 0x0p+0  0x1p+0 0x1.8p+1 -0x1p+1\n"
+              "tri  0x1p+0 0x1p+0 0x1p+0  0x1p+1 0x1p+0 0x1p+0  0x1p+0 0x1p+1 0x1p+0\n");
+    std::istringstream back(out.str());
+    const Scene again = read_tri(back, "back.tri");
+    EXPECT_EQ(again.lines, s.lines);
+    EXPECT_EQ(again.triangles, s.triangles);
+}
+
+TEST(TriFormat, TriangleIdsRejectLinesOutOfOrder) {
+    Scene s;
+    s.triangles.resize(2);
+    s.lines = {{Segment{}, 1}, {Segment{}, 1}};
+    EXPECT_THROW(triangle_ids(s), std::invalid_argument);
+    s.lines = {{Segment{}, 0}, {Segment{}, 4}};
+    EXPECT_THROW(triangle_ids(s), std::invalid_argument);
+    s.lines = {{Segment{}, -1}};
+    EXPECT_THROW(triangle_ids(s), std::invalid_argument);
+    s.lines = {{Segment{}, 3}, {Segment{}, 1}};
+    EXPECT_THROW(triangle_ids(s), std::invalid_argument);
+    s.lines = {{Segment{}, 2}, {Segment{}, 3}};
+    EXPECT_EQ(triangle_ids(s), (std::vector<std::int32_t>{0, 1}));
+    s.viewport = {4, 4};
+    s.lines = {{Segment{}, 3}, {Segment{}, 1}};
+    std::ostringstream out;
+    EXPECT_THROW(write_tri(out, s), std::invalid_argument);
+    EXPECT_EQ(out.str(), "");
 }
 
 TEST(TriFormat, RejectsWrongArity) {
+    EXPECT_EQ(error_of("viewport 4 4\nline 0 0 0 1 0\n"), "s.tri:2: 'line' expects 6 numbers (two ends x y z), got 5 values");
+    EXPECT_EQ(error_of("viewport 4 4\nline 0 0 0 1 0 0 0\n"), "s.tri:2: 'line' expects 6 numbers (two ends x y z), got 7 values");
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1\n"),
               "s.tri:2: 'tri' expects 9 numbers (three vertices x y z), got 8 values");
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1 0 7\n"),
@@ -258,6 +303,7 @@ TEST(TriFormat, RejectsNanAndInfinity) {
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 nan 1 0 0 0 1 0\n"), "s.tri:2: NaN is not allowed: 'nan'");
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1 -NAN(12)\n"), "s.tri:2: NaN is not allowed: '-NAN(12)'");
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 inf 0 0 0 1 0\n"), "s.tri:2: infinity is not allowed: 'inf'");
+    EXPECT_EQ(error_of("viewport 4 4\nline 0 0 0 1 -inf 0\n"), "s.tri:2: infinity is not allowed: '-inf'");
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 -Infinity 0 0 1 0\n"),
               "s.tri:2: infinity is not allowed: '-Infinity'");
     EXPECT_EQ(error_of("viewport 4 4\ntri 0 0 0 1 0 0 0 1e999 0\n"), "s.tri:2: number '1e999' overflows to infinity");

@@ -1,8 +1,9 @@
 // rast — the scene model: only what rasterization needs.
 //
 // Screen space (docs/design.md): x right, y up, the viewport covers [0, W] x [0, H]; pixel (i, j)
-// covers [i, i+1] x [j, j+1]. z is depth: smaller is nearer. A triangle's id is its index in
-// Scene::triangles. Header-only, so that the installed fast library carries no other dependency.
+// covers [i, i+1] x [j, j+1]. z is depth: smaller is nearer. Ids count triangles and lines together,
+// 0-based, in file order; in a scene without lines a triangle's id is its index in Scene::triangles.
+// Header-only, so that the installed fast library carries no other dependency.
 #pragma once
 
 #include <array>
@@ -75,13 +76,51 @@ inline std::span<const SamplePoint> sample_pattern(int count) {
     }
 }
 
+// A line of a scene: its segment and its id among the scene's triangles and lines.
+struct Line {
+    Segment segment;
+    std::int32_t id = 0;
+    friend bool operator==(const Line&, const Line&) = default;
+};
+
 struct Scene {
     Viewport viewport;
     int samples = 1;
     std::vector<Triangle> triangles;
+    std::vector<Line> lines{};  // ids ascending; the triangles take the ids the lines leave, in order
 };
 
-// The z-buffer's content after rendering: per sample, the id of the owning triangle (-1 for none) and
+// The scene's ids: triangles and lines.
+inline std::size_t id_count(const Scene& scene) { return scene.triangles.size() + scene.lines.size(); }
+
+// Appends a line after everything the scene holds so far: its id is the next one.
+inline void append_line(Scene& scene, const Segment& segment) {
+    scene.lines.push_back({segment, static_cast<std::int32_t>(id_count(scene))});
+}
+
+// The id of each triangle, in the order of Scene::triangles: the ids the lines leave, ascending. Throws
+// std::invalid_argument when the scene has more than 2^31 - 1 ids or its lines' ids are not ascending
+// within [0, id_count).
+inline std::vector<std::int32_t> triangle_ids(const Scene& scene) {
+    const std::size_t count = id_count(scene);
+    if (count > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+        throw std::invalid_argument("the scene has " + std::to_string(count) + " triangles and lines, more than 2^31 - 1");
+    std::vector<std::int32_t> ids;
+    ids.reserve(scene.triangles.size());
+    std::int64_t next = 0;
+    for (std::size_t k = 0; k < scene.lines.size(); ++k) {
+        const std::int64_t line_id = scene.lines[k].id;
+        if (line_id < next || line_id >= static_cast<std::int64_t>(count))
+            throw std::invalid_argument("line " + std::to_string(k) + " has id " + std::to_string(line_id) +
+                                        ": the lines' ids must ascend within 0.." + std::to_string(count - 1));
+        while (next < line_id) ids.push_back(static_cast<std::int32_t>(next++));
+        ++next;
+    }
+    while (next < static_cast<std::int64_t>(count)) ids.push_back(static_cast<std::int32_t>(next++));
+    return ids;
+}
+
+// The z-buffer's content after rendering: per sample, the id of the owning triangle or line (-1 for none) and
 // its depth (+infinity for none). Rows are stored bottom row first (j = 0), matching y up; writers of
 // images and id files flip to top row first.
 struct Framebuffer {
@@ -112,5 +151,13 @@ private:
                static_cast<std::size_t>(n);
     }
 };
+
+// Gives the triangles of a framebuffer drawn with each triangle's index in Scene::triangles as its id
+// their ids in the scene (triangle_ids): the engines draw the triangles so, then the lines. Renaming keeps
+// the (z, id) order among triangles, for their ids ascend with their indices.
+inline void rename_triangles(Framebuffer& fb, const std::vector<std::int32_t>& ids) {
+    for (std::int32_t& id : fb.ids)
+        if (id != Framebuffer::kNoTriangle) id = ids[static_cast<std::size_t>(id)];
+}
 
 }  // namespace rast

@@ -5,6 +5,7 @@
 //   viewport W H                 exactly once, anywhere in the file
 //   samples N                    at most once; 1, 4, 8 or 16; default 1
 //   tri x0 y0 z0  x1 y1 z1  x2 y2 z2
+//   line x0 y0 z0  x1 y1 z1      a zero-width segment; ids count tri and line statements together
 //
 // '#' starts a comment anywhere. A line ends with '\n' or "\r\n" (the last may end the file instead); a
 // carriage return anywhere else is an error, so every value read writes back. Numbers are read exactly as strtod reads them in the C locale, hex-float
@@ -39,10 +40,11 @@ TriDocument read_tri_document_file(const std::filesystem::path& path);
 Scene read_tri(std::istream& in, const std::string& name);
 Scene read_tri_file(const std::filesystem::path& path);
 
-// Writes the header as "# key: value" lines, then viewport, samples and one tri line per triangle, every
-// coordinate as a C99 hex-float. Throws std::invalid_argument, writing nothing, for what would not read
-// back the same: a non-finite coordinate, a size outside the limits, a header key that is not a key or a
-// value with a line break or surrounding blanks.
+// Writes the header as "# key: value" lines, then viewport, samples and one tri or line statement per
+// triangle or line in id order, every coordinate as a C99 hex-float. Throws std::invalid_argument,
+// writing nothing, for what would not read back the same: a non-finite coordinate, a size outside the
+// limits, lines' ids that triangle_ids rejects, a header key that is not a key or a value with a line
+// break or surrounding blanks.
 void write_tri(std::ostream& out, const Scene& scene, const TriHeader& header = {});
 
 // Any text as a header value write_tri takes: line breaks become blanks, surrounding blanks go, and an
