@@ -108,14 +108,6 @@ bool is_y_major(const Segment& s) {
     return ey > ex;
 }
 
-void require_finite(const Segment& s) {
-    for (int e = 0; e < 2; ++e)
-        if (!std::isfinite(s.v[e].x) || !std::isfinite(s.v[e].y) || !std::isfinite(s.v[e].z))
-            throw std::invalid_argument("segment end " + std::to_string(e) + " (" + std::to_string(s.v[e].x) + ", " +
-                                        std::to_string(s.v[e].y) + ", " + std::to_string(s.v[e].z) +
-                                        ") has a coordinate that is not finite");
-}
-
 // The rule for a segment pq of non-zero length.
 bool lights(const Point& p, const Point& q, bool y_major, int i, int j) {
     const Diamond d(i, j);
@@ -126,14 +118,14 @@ bool lights(const Point& p, const Point& q, bool y_major, int i, int j) {
 }  // namespace
 
 bool lights(const Segment& s, int i, int j) {
-    require_finite(s);
+    detail::require_finite(s);
     const Point p(s.v[0].x, s.v[0].y), q(s.v[1].x, s.v[1].y);
     return p != q && lights(p, q, is_y_major(s), i, j);
 }
 
 std::vector<std::size_t> lit_pixels(const Segment& s, Viewport vp) {
     detail::require_valid(vp, 1);
-    require_finite(s);
+    detail::require_finite(s);
     std::vector<std::size_t> lit;
     const Point p(s.v[0].x, s.v[0].y), q(s.v[1].x, s.v[1].y);
     if (p == q) return lit;

@@ -4,6 +4,7 @@
 
 #include "bounded_depth.h"
 #include "exact_depth.h"
+#include "line_pass.h"
 #include "pixel_box.h"
 #include "validate.h"
 
@@ -442,9 +443,9 @@ Rational depth_at(const Triangle& t, double x, double y) {
 Framebuffer render(const Scene& scene, Stats* stats_out, const Progress& progress) {
     detail::require_valid(scene.viewport, scene.samples);
     const auto pattern = sample_pattern(scene.samples);
-    if (scene.triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-        throw std::invalid_argument("render: too many triangles for 32-bit ids");
-    for (std::size_t id = 0; id < scene.triangles.size(); ++id) detail::require_finite(scene.triangles[id], id);
+    const std::vector<std::int32_t> ids = triangle_ids(scene);
+    for (std::size_t k = 0; k < scene.triangles.size(); ++k) detail::require_finite(scene.triangles[k], k);
+    for (std::size_t k = 0; k < scene.lines.size(); ++k) detail::require_finite(scene.lines[k].segment, k);
 
     Stats stats;
     Rasterizer rasterizer(stats);
@@ -484,6 +485,7 @@ Framebuffer render(const Scene& scene, Stats* stats_out, const Progress& progres
         }
         report_progress(progress, n + 1, order.size());
     }
+    if (!scene.lines.empty()) detail::draw_lines(scene, ids, fb);
 
     if (stats_out) *stats_out = stats;
     return fb;

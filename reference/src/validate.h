@@ -10,6 +10,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace rast::reference::detail {
 
@@ -26,6 +27,18 @@ inline void require_finite(const Triangle& t, std::optional<std::size_t> id = st
         if (id) msg << *id << " ";
         msg << "vertex " << k << " (" << v.x << ", " << v.y << ", " << v.z
             << ") has a coordinate that is not finite";
+        throw std::invalid_argument(msg.str());
+    }
+}
+
+// `id` names the line in the message when the caller knows it.
+inline void require_finite(const Segment& s, std::optional<std::size_t> id = std::nullopt) {
+    for (std::size_t e = 0; e < s.v.size(); ++e) {
+        const Vertex& v = s.v[e];
+        if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)) continue;
+        std::ostringstream msg;
+        msg << (id ? "line " + std::to_string(*id) + " " : std::string("segment ")) << "end " << e << " (" << v.x
+            << ", " << v.y << ", " << v.z << ") has a coordinate that is not finite";
         throw std::invalid_argument(msg.str());
     }
 }

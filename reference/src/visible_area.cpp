@@ -147,6 +147,7 @@ Row cut_row(int j, int width, const std::vector<const Candidate*>& in_row) {
 VisibleArea visible_area(const Scene& scene, const Progress& progress, unsigned threads, VisibleStats* stats) {
     const Viewport vp = scene.viewport;
     detail::require_valid(vp, 1);
+    const std::vector<std::int32_t> ids = triangle_ids(scene);
     std::vector<Candidate> candidates;
     candidates.reserve(scene.triangles.size());
     for (std::size_t id = 0; id < scene.triangles.size(); ++id) {
@@ -183,6 +184,9 @@ VisibleArea visible_area(const Scene& scene, const Progress& progress, unsigned 
         for (const std::size_t n : row.count) first.push_back(first.back() + n);
         std::move(row.pieces.begin(), row.pieces.end(), std::back_inserter(pieces));
     }
+    // Cut by their indices, the triangles take their ids in the scene; lines have no area.
+    if (!scene.lines.empty())
+        for (VisiblePiece& piece : pieces) piece.id = static_cast<std::size_t>(ids[piece.id]);
     return VisibleArea(vp, std::move(first), std::move(pieces));
 }
 

@@ -7,6 +7,7 @@
 // decision is an exact orientation predicate (CGAL) on the input doubles.
 #pragma once
 
+#include <rast/reference.h>
 #include <rast/scene.h>
 
 #include <cstddef>
@@ -19,5 +20,10 @@ bool lights(const Segment& s, int i, int j);
 
 // The pixels of the viewport that `s` lights, as pixel indices j * width + i, ascending.
 std::vector<std::size_t> lit_pixels(const Segment& s, Viewport vp);
+
+// The exact depth of `s` at pixel (i, j): z interpolated along the segment at its point nearest the
+// pixel centre (i + 1/2, j + 1/2), an end where the centre lies beyond it. In a framebuffer every sample
+// of a pixel a line lights takes that one depth. The start's z for a segment of zero length.
+Rational line_depth(const Segment& s, int i, int j);
 
 }  // namespace rast::reference

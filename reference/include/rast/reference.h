@@ -45,8 +45,8 @@ std::vector<std::size_t> covered_samples(const Triangle& t, Viewport vp, int sam
 // Precondition: t has non-zero area.
 Rational depth_at(const Triangle& t, double x, double y);
 
-// Rasterizes the scene with the z-buffer's (z, id) order. Depths in the result are the exact depths
-// rounded to the nearest double. `progress` counts triangles drawn.
+// Rasterizes the scene, its triangles and lines (rast/line.h), with the z-buffer's (z, id) order. Depths
+// in the result are the exact depths rounded to the nearest double. `progress` counts triangles drawn.
 Framebuffer render(const Scene& scene, Stats* stats = nullptr, const Progress& progress = {});
 
 // Exact area coverage (the box-prefiltered ideal): for every pixel, bottom row first, the area of the

@@ -4,6 +4,7 @@
 // docs/design.md, z the triangle's plane: triangles that interpenetrate split a pixel along the line where
 // their planes meet, and coplanar overlaps go to the lower id. Boundaries have no area, so the tie rule
 // plays no part. This is what supersampling a z-buffer approximates: the box-filtered visible image.
+// Lines have no area: they hide nothing and own none (their ids are skipped).
 #pragma once
 
 #include <rast/progress.h>
@@ -42,7 +43,8 @@ private:
 };
 
 // The visible areas of pixel (i, j) alone, cutting with the triangles `order` names, in that order (each
-// id at most once; a triangle left out is not there). visible_area inserts them roughly front to back;
+// id at most once; a triangle left out is not there). Here a triangle's id is its index in
+// Scene::triangles, in `order` and in the pieces alike. visible_area inserts them roughly front to back;
 // any order gives the same areas, which a property holds. Throws std::invalid_argument for a pixel
 // outside the viewport, an id out of range or named twice, or a coordinate that is not finite.
 std::vector<VisiblePiece> visible_in_pixel(const Scene& scene, int i, int j, std::span<const std::size_t> order);
