@@ -7,12 +7,18 @@
 // its x-range) or starts inside the diamond; it lights the pixel unless it ends inside. For a y-major
 // segment the same holds across rows, except that the held right corner and unheld left one make the
 // candidate i = ceil(x(j + 1/2)) - 1.
+//
+// The walk is the same in any integer type: 128-bit integers where the snapped ends lie within 2^51 grid
+// units of the origin (products of two coordinate differences then stay below 2^105), Boost's big ones
+// beyond, up to coordinates of +-DBL_MAX. Only the columns (or rows) of the viewport are walked either way.
 #include <rast/fast.h>
 
 #include "line_diamond.h"
 #include "snap.h"
 
 #include <rast/scene_limits.h>
+
+#include <boost/multiprecision/cpp_int.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -24,37 +30,96 @@ namespace rast::fast {
 
 namespace {
 
-using Wide = __int128;
+using Big = boost::multiprecision::cpp_int;
 
-// floor(a / b) for b > 0.
-Wide floor_div(Wide a, Wide b) {
-    const Wide q = a / b;
-    return (a % b != 0 && a < 0) ? q - 1 : q;
+// floor(a / b) for b > 0 (both types divide toward zero).
+template <class Int>
+Int floor_div(const Int& a, const Int& b) {
+    const Int q = a / b;
+    return (a % b != 0 && a < 0) ? Int(q - 1) : q;
 }
 
 // A point on the grid, in units of 2^-bits pixel, with the axes swapped for a y-major segment so that
 // "along" is always the major axis.
+template <class Int>
 struct GridPoint {
-    std::int64_t along, across;
+    Int along, across;
 };
 
 // Whether the diamond of the pixel (k along, m across) holds p.
-bool holds(GridPoint p, std::int64_t k, std::int64_t m, std::int64_t unit, bool y_major) {
-    const std::int64_t half = unit / 2;
-    return detail::diamond_holds(p.along - (k * unit + half), p.across - (m * unit + half), half, y_major);
+template <class Int>
+bool holds(const GridPoint<Int>& p, const Int& k, const Int& m, const Int& unit, bool y_major) {
+    const Int half = unit / 2;
+    return detail::diamond_holds<Int>(p.along - (k * unit + half), p.across - (m * unit + half), half, y_major);
 }
 
 // The pixel whose diamond holds p, if any: the pixel square containing p, or, for a y-major segment,
 // the one left of it when p lies on the square's left side (its right corner).
-bool holder(GridPoint p, std::int64_t unit, bool y_major, std::int64_t& k, std::int64_t& m) {
-    k = static_cast<std::int64_t>(floor_div(p.along, unit));
-    m = static_cast<std::int64_t>(floor_div(p.across, unit));
-    if (holds(p, k, m, unit, y_major)) return true;
-    if (y_major && p.across == m * unit && holds(p, k, m - 1, unit, y_major)) {
-        --m;
+template <class Int>
+bool holder(const GridPoint<Int>& p, const Int& unit, bool y_major, Int& k, Int& m) {
+    k = floor_div<Int>(p.along, unit);
+    m = floor_div<Int>(p.across, unit);
+    if (holds<Int>(p, k, m, unit, y_major)) return true;
+    if (y_major && p.across == m * unit && holds<Int>(p, k, Int(m - 1), unit, y_major)) {
+        m -= 1;
         return true;
     }
     return false;
+}
+
+// The pixels the segment from (x0, y0) to (x1, y1), in grid units of 2^-bits, lights, in any order and
+// possibly repeated.
+template <class Int>
+std::vector<std::size_t> walk(const Int x[2], const Int y[2], int bits, Viewport vp) {
+    std::vector<std::size_t> lit;
+    if (x[0] == x[1] && y[0] == y[1]) return lit;
+    const Int unit = Int(1) << bits, half = unit / 2;
+    const Int ax = x[1] > x[0] ? Int(x[1] - x[0]) : Int(x[0] - x[1]);
+    const Int ay = y[1] > y[0] ? Int(y[1] - y[0]) : Int(y[0] - y[1]);
+    const bool y_major = ay > ax;
+    const GridPoint<Int> start = y_major ? GridPoint<Int>{y[0], x[0]} : GridPoint<Int>{x[0], y[0]};
+    const GridPoint<Int> end = y_major ? GridPoint<Int>{y[1], x[1]} : GridPoint<Int>{x[1], y[1]};
+    const Int n_along = y_major ? vp.height : vp.width, n_across = y_major ? vp.width : vp.height;
+    const auto keep = [&](const Int& k, const Int& m) {
+        if (k < 0 || k >= n_along || m < 0 || m >= n_across) return;
+        const auto i = static_cast<std::size_t>(y_major ? m : k), j = static_cast<std::size_t>(y_major ? k : m);
+        lit.push_back(j * static_cast<std::size_t>(vp.width) + i);
+    };
+    Int end_k, end_m, start_k, start_m;
+    const bool ends_inside = holder<Int>(end, unit, y_major, end_k, end_m);
+    const bool starts_inside = holder<Int>(start, unit, y_major, start_k, start_m);
+
+    // Walk the major axis left to right over the centres within the segment's span.
+    const GridPoint<Int>& lo = start.along <= end.along ? start : end;
+    const GridPoint<Int>& hi = start.along <= end.along ? end : start;
+    const Int d_along = hi.along - lo.along, d_across = hi.across - lo.across;
+    // Centres k * unit + half within [lo.along, hi.along], clipped to the viewport.
+    const Int first = std::max<Int>(Int(-floor_div<Int>(Int(half - lo.along), unit)), Int(0));
+    const Int last = std::min<Int>(floor_div<Int>(Int(hi.along - half), unit), Int(n_along - 1));
+    if (first <= last) {
+        // across(centre) = lo.across + (centre - lo.along) d_across / d_along; the candidate is its
+        // floor in pixels (x-major) or its ceiling minus one (y-major): floor((num - 1) / den).
+        const Int den = d_along * unit;
+        Int num = lo.across * d_along + (first * unit + half - lo.along) * d_across;
+        if (y_major) num -= 1;
+        Int m = floor_div<Int>(num, den), r = num - m * den;  // 0 <= r < den
+        const Int step = d_across * unit;                     // |step| <= den: at most one carry a column
+        for (Int k = first; k <= last; k += 1) {
+            if (!(ends_inside && k == end_k && m == end_m)) keep(k, m);
+            r += step;
+            if (r >= den) r -= den, m += 1;
+            else if (r < 0) r += den, m -= 1;
+        }
+    }
+    // A start inside a diamond whose diagonal the segment never reaches.
+    if (starts_inside && !(ends_inside && start_k == end_k && start_m == end_m)) keep(start_k, start_m);
+    return lit;
+}
+
+// A snapped coordinate in grid units: exact, for a multiple of 2^-bits (a double of magnitude 2^52 or
+// more is an integer, so its units are it shifted left).
+Big big_units(double snapped, int bits) {
+    return std::abs(snapped) < 0x1p52 ? Big(std::ldexp(snapped, bits)) : Big(Big(snapped) << bits);
 }
 
 }  // namespace
@@ -63,58 +128,27 @@ std::vector<std::size_t> bresenham(const Segment& s, Viewport vp, int bits) {
     check_framebuffer(vp, 1, "rast::fast::bresenham");
     if (bits < 1 || bits > 16)
         throw std::invalid_argument("rast::fast::bresenham: subpixel bits " + std::to_string(bits) + " outside 1..16");
-    const double scale = std::ldexp(1.0, bits), limit = std::ldexp(1.0, 51 - bits);
-    std::int64_t x[2], y[2];
+    double sx[2], sy[2];
     for (int e = 0; e < 2; ++e) {
-        const double sx = detail::snap_coordinate(s.v[e].x, bits), sy = detail::snap_coordinate(s.v[e].y, bits);
-        if (!(std::abs(sx) <= limit && std::abs(sy) <= limit))
-            throw std::out_of_range("rast::fast::bresenham: endpoint " + std::to_string(e) + " (" +
-                                    std::to_string(s.v[e].x) + ", " + std::to_string(s.v[e].y) +
-                                    ") lies beyond 2^" + std::to_string(51 - bits) + " pixels");
-        x[e] = detail::grid_units(sx, scale);
-        y[e] = detail::grid_units(sy, scale);
+        if (!std::isfinite(s.v[e].x) || !std::isfinite(s.v[e].y))
+            throw std::invalid_argument("rast::fast::bresenham: end " + std::to_string(e) + " is not finite");
+        sx[e] = detail::snap_coordinate(s.v[e].x, bits);
+        sy[e] = detail::snap_coordinate(s.v[e].y, bits);
     }
+    const double scale = std::ldexp(1.0, bits), limit = std::ldexp(1.0, 51 - bits);
+    const bool narrow = std::abs(sx[0]) <= limit && std::abs(sy[0]) <= limit && std::abs(sx[1]) <= limit &&
+                        std::abs(sy[1]) <= limit;
     std::vector<std::size_t> lit;
-    if (x[0] == x[1] && y[0] == y[1]) return lit;
-    const std::int64_t unit = std::int64_t{1} << bits;
-    const bool y_major = std::abs(y[1] - y[0]) > std::abs(x[1] - x[0]);  // each below 2^52
-    const GridPoint start = y_major ? GridPoint{y[0], x[0]} : GridPoint{x[0], y[0]};
-    const GridPoint end = y_major ? GridPoint{y[1], x[1]} : GridPoint{x[1], y[1]};
-    const std::int64_t n_along = y_major ? vp.height : vp.width, n_across = y_major ? vp.width : vp.height;
-    const auto keep = [&](std::int64_t k, std::int64_t m) {
-        if (k < 0 || k >= n_along || m < 0 || m >= n_across) return;
-        const std::int64_t i = y_major ? m : k, j = y_major ? k : m;
-        lit.push_back(static_cast<std::size_t>(j) * static_cast<std::size_t>(vp.width) + static_cast<std::size_t>(i));
-    };
-    std::int64_t end_k = 0, end_m = 0, start_k = 0, start_m = 0;
-    const bool ends_inside = holder(end, unit, y_major, end_k, end_m);
-    const bool starts_inside = holder(start, unit, y_major, start_k, start_m);
-
-    // Walk the major axis left to right over the centres within the segment's span.
-    const GridPoint& lo = start.along <= end.along ? start : end;
-    const GridPoint& hi = start.along <= end.along ? end : start;
-    const Wide d_along = static_cast<Wide>(hi.along) - lo.along, d_across = static_cast<Wide>(hi.across) - lo.across;
-    const std::int64_t half = unit / 2;
-    // Centres k * unit + half within [lo.along, hi.along], clipped to the viewport.
-    const Wide first = std::max<Wide>(-floor_div(-(static_cast<Wide>(lo.along) - half), unit), 0);
-    const Wide last = std::min<Wide>(floor_div(static_cast<Wide>(hi.along) - half, unit), n_along - 1);
-    if (first <= last) {
-        // across(centre) = lo.across + (centre - lo.along) d_across / d_along; the candidate is its
-        // floor in pixels (x-major) or its ceiling minus one (y-major): floor((num - 1) / den).
-        const Wide den = d_along * unit;
-        Wide num = static_cast<Wide>(lo.across) * d_along + (first * unit + half - lo.along) * d_across;
-        if (y_major) num -= 1;
-        Wide m = floor_div(num, den), r = num - m * den;  // 0 <= r < den
-        const Wide step = d_across * unit;                 // |step| <= den: at most one carry a column
-        for (Wide k = first; k <= last; ++k) {
-            if (!(ends_inside && k == end_k && m == end_m)) keep(static_cast<std::int64_t>(k), static_cast<std::int64_t>(m));
-            r += step;
-            if (r >= den) r -= den, ++m;
-            else if (r < 0) r += den, --m;
-        }
+    if (narrow) {
+        using Wide = __int128;
+        const Wide x[2] = {detail::grid_units(sx[0], scale), detail::grid_units(sx[1], scale)};
+        const Wide y[2] = {detail::grid_units(sy[0], scale), detail::grid_units(sy[1], scale)};
+        lit = walk<Wide>(x, y, bits, vp);
+    } else {
+        const Big x[2] = {big_units(sx[0], bits), big_units(sx[1], bits)};
+        const Big y[2] = {big_units(sy[0], bits), big_units(sy[1], bits)};
+        lit = walk<Big>(x, y, bits, vp);
     }
-    // A start inside a diamond whose diagonal the segment never reaches.
-    if (starts_inside && !(ends_inside && start_k == end_k && start_m == end_m)) keep(start_k, start_m);
     std::sort(lit.begin(), lit.end());
     lit.erase(std::unique(lit.begin(), lit.end()), lit.end());
     return lit;

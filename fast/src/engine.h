@@ -4,6 +4,7 @@
 #pragma once
 
 #include "kernels.h"
+#include "line_pass.h"
 #include "scalar.h"
 #include "setup.h"
 #include "validate.h"
@@ -682,6 +683,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     validate_threads(options.threads);
     if (scene.triangles.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
         throw std::invalid_argument("rast::fast: more triangles than 32-bit ids can name");
+    const std::vector<std::int32_t> ids = scene.lines.empty() ? std::vector<std::int32_t>{} : checked_lines(scene);
 
     const Context c = make_context<F>(scene.viewport, scene.samples, options.precision);
     const SceneView view{scene.triangles, c};
@@ -738,6 +740,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
             }
         });
     });
+    if (!scene.lines.empty()) draw_lines(scene, c, ids, fb);
 }
 
 template <Fault F>

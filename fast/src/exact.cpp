@@ -287,6 +287,44 @@ int ExactPlanes::compare(std::int64_t t_id, const Corners& t, std::int64_t u_id,
     return found->second.at(x, y).m.sign();
 }
 
+namespace {
+
+// A depth as a fraction num / den, den > 0.
+struct Fraction {
+    Dyadic num, den;
+};
+
+// The segment's nearest point to c has the parameter n / d along it, clamped to [0, 1], where
+// n = (c - a) . (b - a) and d = |b - a|^2; its depth is z_a + (n / d)(z_b - z_a) = (z_a d + n (z_b - z_a)) / d.
+Fraction segment_depth(const Segment& s, double cx, double cy) {
+    const Vertex &a = s.v[0], &b = s.v[1];
+    const Dyadic one = dyadic(1), ax = dyadic(a.x), ay = dyadic(a.y);
+    const Dyadic dx = dyadic(b.x) - ax, dy = dyadic(b.y) - ay;
+    const Dyadic d = dx * dx + dy * dy;
+    const Dyadic n = (dyadic(cx) - ax) * dx + (dyadic(cy) - ay) * dy;
+    if (d.m.is_zero() || n.m.sign() <= 0) return {dyadic(a.z), one};
+    if ((n - d).m.sign() >= 0) return {dyadic(b.z), one};
+    return {dyadic(a.z) * d + n * (dyadic(b.z) - dyadic(a.z)), d};
+}
+
+Fraction depth_of(const DepthAt& a) {
+    if (a.segment) return segment_depth(*a.segment, a.x, a.y);
+    const Plane p = plane_of(*a.triangle);
+    return {p.numerator.at(a.x, a.y), p.area};
+}
+
+}  // namespace
+
+int compare(const DepthAt& a, const DepthAt& b) {
+    const Fraction p = depth_of(a), q = depth_of(b);
+    return (p.num * q.den - q.num * p.den).m.sign();
+}
+
+double nearest(const DepthAt& a) {
+    const Fraction p = depth_of(a);
+    return quotient(p.num, p.den);
+}
+
 double ExactPlanes::depth(std::int64_t id, const Corners& t, double x, double y) {
     if (!cache_) cache_ = std::make_unique<Cache>();
     const Plane& p = cache_->plane(id, t);

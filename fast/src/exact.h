@@ -41,6 +41,21 @@ private:
     std::unique_ptr<Cache> cache_;  // created at the first exact comparison
 };
 
+// A depth the lines' z-buffer test may have to settle exactly: the plane of `triangle` (non-degenerate,
+// any corner order) at (x, y), or the depth of `segment` at its point nearest (x, y), z interpolated
+// along it (docs/design.md). Exactly one of the two is set.
+struct DepthAt {
+    const Corners* triangle = nullptr;
+    const Segment* segment = nullptr;
+    double x = 0, y = 0;
+};
+
+// Sign (-1, 0, 1) of a's depth minus b's.
+int compare(const DepthAt& a, const DepthAt& b);
+
+// a's depth rounded to the nearest double.
+double nearest(const DepthAt& a);
+
 // For a counter-clockwise triangle whose coordinates are multiples of 2^-bits: for each pixel row j in
 // [j_lo, j_hi] and each sample s, spans[(j - j_lo) * offsets.size() + s] := the pixels i in [i_lo, i_hi]
 // whose sample (i + offset.x, j + offset.y) the triangle covers. inclusive[k] says whether edge

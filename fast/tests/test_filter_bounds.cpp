@@ -4,6 +4,7 @@
 // one of its terms dropped, fails on the same inputs. Worst ratios are printed for docs/filters.md.
 #include "edge_bound.h"
 #include "engine.h"
+#include "line_depth.h"
 #include "setup.h"
 
 #include <rast/fast_faults.h>
@@ -230,6 +231,98 @@ TEST(NearestBound, IsSoundAndEveryTermBites) {
     EXPECT_GT(worst_ratio(nearest_error<Halved>), 1.0);
     EXPECT_GT(worst_ratio(nearest_error<Without<NearestTerm::rounding>>), 1.0);
     EXPECT_GT(worst_ratio(nearest_error<Without<NearestTerm::underflow>>), 1.0);
+}
+
+// --- A line's depth at a pixel (line_depth.h) ------------------------------------------------------
+
+// A segment's ends (x0, y0, z0, x1, y1, z1) and the pixel whose centre it is evaluated at.
+struct LineCase {
+    std::array<double, 6> ends;
+    int i, j;
+};
+
+Segment segment_of(const std::array<double, 6>& e) { return {{Vertex{e[0], e[1], e[2]}, Vertex{e[3], e[4], e[5]}}}; }
+
+// z at the segment's point nearest the centre, in rationals (docs/design.md).
+Rational exact_line_depth(const Segment& s, double cx, double cy) {
+    const Rational x0(s.v[0].x), y0(s.v[0].y), z0(s.v[0].z);
+    const Rational dx = Rational(s.v[1].x) - x0, dy = Rational(s.v[1].y) - y0;
+    const Rational d = dx * dx + dy * dy;
+    const Rational n = (Rational(cx) - x0) * dx + (Rational(cy) - y0) * dy;
+    if (d == 0 || n <= 0) return z0;
+    if (n >= d) return Rational(s.v[1].z);
+    return z0 + n / d * (Rational(s.v[1].z) - z0);
+}
+
+template <class W>
+double line_ends_ratio(const std::array<double, 6>& ends, int i, int j) {
+    const Segment s = segment_of(ends);
+    const Bounded z = line_depth<W>(s, i + 0.5, j + 0.5);
+    if (!(z.e < std::numeric_limits<double>::infinity())) return 0;
+    return ratio(abs(Rational(z.v) - exact_line_depth(s, i + 0.5, j + 0.5)), z.e);
+}
+
+template <class W>
+double line_ratio(const LineCase& k) {
+    return line_ends_ratio<W>(k.ends, k.i, k.j);
+}
+
+// Centres well inside the segment's span (the clamp is decided), from three families: ends with every
+// bit set, whose differences and products round, so the parameter's error leads; depths near 1 with a
+// small rise (the evaluation's roundings lead); and ends on the 1/256 grid, where the parameter is a
+// quotient of exact integers and depths of every magnitude.
+std::vector<LineCase> line_cases(int count) {
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
+    std::uniform_int_distribution<int> grid(0, 64 * 256), ulps(-64, 64);
+    std::vector<LineCase> cases;
+    for (int n = 0; n < count; ++n) {
+        LineCase k{};
+        const bool on_grid = n % 3 == 2;
+        for (const int e : {0, 1, 3, 4}) k.ends[e] = on_grid ? grid(rng) / 256.0 : 64 * unit(rng);
+        switch (n % 3) {
+            case 0: k.ends[2] = 0, k.ends[5] = std::ldexp(signed_unit(rng), ulps(rng) % 16); break;
+            case 1: k.ends[2] = 1 + ulps(rng) * 0x1p-52, k.ends[5] = 1 + std::ldexp(unit(rng), -20); break;
+            default: k.ends[2] = std::ldexp(signed_unit(rng), ulps(rng) % 8), k.ends[5] = std::ldexp(signed_unit(rng), ulps(rng) % 8);
+        }
+        // A centre near the middle of the segment.
+        const double t = 0.25 + unit(rng) / 2;
+        k.i = static_cast<int>(std::floor(k.ends[0] + t * (k.ends[3] - k.ends[0])));
+        k.j = static_cast<int>(std::floor(k.ends[1] + t * (k.ends[4] - k.ends[1])));
+        const auto score = [&](const std::array<double, 6>& ends) { return line_ends_ratio<Sound>(ends, k.i, k.j); };
+        climb(k.ends, score, rng, 200);
+        cases.push_back(k);
+    }
+    return cases;
+}
+
+const std::vector<LineCase>& line_cases() {
+    static const std::vector<LineCase> cases = line_cases(climbs(90));
+    return cases;
+}
+
+TEST(LineDepthBound, IsSoundAndEveryTermBites) {
+    const double sound = worst(line_cases(), line_ratio<Sound>);
+    std::printf("line depth: worst error / bound %.3f\n", sound);
+    EXPECT_LE(sound, 1.0);
+    EXPECT_GT(worst(line_cases(), line_ratio<Halved>), 1.0);
+    EXPECT_GT(worst(line_cases(), line_ratio<Without<LineDepthTerm::parameter>>), 1.0);
+    EXPECT_GT(worst(line_cases(), line_ratio<Without<LineDepthTerm::evaluation>>), 1.0);
+}
+
+// The clamp, by hand: a centre beyond either end takes that end's z exactly, with no error to bound, and
+// one exactly abreast of an end (n = 0 or n = d) is left to exact arithmetic.
+TEST(LineDepthBound, ClampsExactlyOrNotAtAll) {
+    const Segment s{{Vertex{0.5, 0.5, 0.1}, Vertex{4.5, 0.5, 0.7}}};
+    EXPECT_EQ(line_depth(s, -1.5, 0.5).v, 0.1);
+    EXPECT_EQ(line_depth(s, -1.5, 0.5).e, 0.0);
+    EXPECT_EQ(line_depth(s, 6.5, 3.5).v, 0.7);
+    EXPECT_EQ(line_depth(s, 6.5, 3.5).e, 0.0);
+    EXPECT_EQ(line_depth(s, 0.5, 2.5).e, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(line_depth(s, 4.5, 2.5).e, std::numeric_limits<double>::infinity());
+    const Bounded middle = line_depth(s, 2.5, 7.5);
+    EXPECT_LE(std::abs(middle.v - 0.4), middle.e);
+    EXPECT_LT(middle.e, 1e-15);
 }
 
 // --- The float modes' edge function ----------------------------------------------------------------

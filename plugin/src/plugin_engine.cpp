@@ -38,6 +38,9 @@ Engine plugin_engine(const std::string& given, const PluginOptions& options) {
                           "\": " + e.what());
     }
     const auto draw = [process, contract, library](const Scene& scene, Framebuffer& fb) {
+        if (!scene.lines.empty())
+            throw EngineError("plugin " + library + " (" + contract.name + ") cannot draw the scene's " +
+                              std::to_string(scene.lines.size()) + " lines: the plugin ABI (version 1) has triangles only");
         if (!contract.renders(scene.samples))
             throw EngineError("plugin " + library + " (" + contract.name + ") does not render " +
                               std::to_string(scene.samples) + " samples a pixel (its contract: " +

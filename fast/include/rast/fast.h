@@ -133,9 +133,10 @@ std::array<double, 3> edge_error_bound_at(const Triangle& t, Precision precision
 // Lines: the pixels of the viewport a segment lights by the diamond-exit rule (docs/design.md), as pixel
 // indices j * width + i, ascending. The midpoint (Bresenham) algorithm: x and y of both ends snapped to
 // the 1/2^bits grid as the fixed modes snap (bits 1..16), then one candidate per column (x-major) or row
-// (y-major) stepped in integers, and the ends' diamonds decided exactly: the reference's pixels for the
-// snapped segment, bit for bit. Throws std::invalid_argument for a viewport outside the limits above or
-// bits outside 1..16, std::out_of_range for a snapped coordinate beyond 2^(51 - bits) pixels.
+// (y-major) stepped in integers (128-bit, or big integers for ends beyond 2^(51 - bits) pixels), and the
+// ends' diamonds decided exactly: the reference's pixels for the snapped segment, bit for bit. Throws
+// std::invalid_argument for a viewport outside the limits above, bits outside 1..16 or an end that is not
+// finite.
 std::vector<std::size_t> bresenham(const Segment& s, Viewport vp, int bits = 8);
 
 // The same rule by the digital differential analyzer in float32 or float64: the ends rounded to that
