@@ -370,6 +370,64 @@ rc::Gen<Scene> layered_triangles() {
     }));
 }
 
+rc::Gen<Scene> lines_among_triangles() {
+    return rc::gen::exec([] {
+        const Viewport vp{*rc::gen::inRange(1, 9), *rc::gen::inRange(1, 9)};
+        std::vector<std::array<double, 3>> planes;  // z = a x + b y + c
+        for (int p = *rc::gen::inRange(1, 4); p > 0; --p)
+            planes.push_back({*on_grid(-1, 1, 3), *on_grid(-1, 1, 3), *on_grid(-2, 2, 2)});
+        if (*rc::gen::inRange(0, 2) == 0) planes[0][1] = 0;  // level along y: a row in it ties at every centre
+        const auto plane = [&] { return *rc::gen::elementOf(planes); };
+        const auto in_plane = [](const std::array<double, 3>& p, double x, double y) {
+            return Vertex{x, y, p[0] * x + p[1] * y + p[2]};
+        };
+        std::vector<Triangle> triangles;
+        for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
+            Triangle t = *rc::gen::inRange(0, 2) == 0
+                             ? Triangle{{Vertex{-2, -2, 0}, Vertex{3.0 * vp.width + 4, -2, 0}, Vertex{-2, 3.0 * vp.height + 4, 0}}}
+                             : ordinary(vp);
+            const auto p = plane();
+            for (Vertex& v : t.v) v = in_plane(p, v.x, v.y);
+            triangles.push_back(t);
+        }
+        std::vector<Segment> segments;
+        for (int k = *rc::gen::inRange(1, 6); k > 0; --k) {
+            Segment s;
+            switch (*rc::gen::inRange(0, 3)) {
+                case 0:  // anywhere
+                    s = {{vertex_in(vp), vertex_in(vp)}};
+                    break;
+                case 1: {  // centre to centre along a row, a column, a diagonal or a knight's move
+                    const auto [dx, dy] = *rc::gen::element(std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1},
+                                                            std::pair{1, -1}, std::pair{2, 1}, std::pair{1, -2});
+                    const int steps = *rc::gen::inRange(-4, 5);
+                    const double x = *rc::gen::inRange(-1, vp.width + 1) + 0.5, y = *rc::gen::inRange(-1, vp.height + 1) + 0.5;
+                    const auto p = plane();
+                    s = {{in_plane(p, x, y), in_plane(p, x + steps * dx, y + steps * dy)}};
+                    break;
+                }
+                default: {  // a row in a plane, ends on the quarter grid
+                    const auto p = plane();
+                    const double y = *on_grid(-1, vp.height + 1.0, 1);
+                    s = {{in_plane(p, *on_grid(-2, vp.width + 2.0, 2), y), in_plane(p, *on_grid(-2, vp.width + 2.0, 2), y)}};
+                }
+            }
+            segments.push_back(s);
+        }
+        // File order: the lines among the triangles at random places.
+        Scene scene{vp, *rc::gen::element(1, 4), {}};
+        std::size_t next_triangle = 0, next_line = 0;
+        while (next_triangle < triangles.size() || next_line < segments.size()) {
+            const std::size_t left = triangles.size() - next_triangle + segments.size() - next_line;
+            if (*rc::gen::inRange<std::size_t>(0, left) < segments.size() - next_line)
+                append_line(scene, segments[next_line++]);
+            else
+                scene.triangles.push_back(triangles[next_triangle++]);
+        }
+        return scene;
+    });
+}
+
 rc::Gen<Scene> small_window(rc::Gen<Scene> scenes) {
     return rc::gen::exec([scenes] {
         Scene s = *scenes;

@@ -23,6 +23,7 @@ rc::Gen<Scene> scenes_for(std::string_view property) {
     if (property == "visible_area" || property == "msaa_visible_bound")
         return small_window(rc::gen::weightedOneOf<Scene>(
             {{2, layered_triangles()}, {2, overlapping_triangles()}, {1, triangulated_region()}, {1, loose_triangles()}}));
+    if (property == "lines_zbuffer") return lines_among_triangles();
     properties::property(property);  // throws for a name that is not a property
     return any_scene();
 }

@@ -27,6 +27,7 @@ Outcome visible_area(const Scene& scene, const Engine& engine);
 // What visible_area concludes of `computed`: the reference's visible area, or a broken one in the bite tests.
 Outcome visible_area_of(const Scene& scene, const std::function<reference::VisibleArea(const Scene&)>& computed);
 Outcome msaa_visible_bound(const Scene& scene, const Engine& engine);
+Outcome lines_zbuffer(const Scene& scene, const Engine& engine);
 
 // Not applicable, naming the first triangle that snapping to the engine's grid turns over (or gives area
 // it did not have), where `geometry` (rasterized_geometry) has one: the snapped scene is then no longer

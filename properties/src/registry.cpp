@@ -18,6 +18,8 @@ bool fixed_engines(const Engine& e) { return e.exact() && e.snap_bits().has_valu
 bool float_engines(const Engine& e) { return e.edge_error_bound_at && !e.exact(); }
 bool reference_only(const Engine& e) { return e.is_reference(); }
 bool exact_zid_engines(const Engine& e) { return e.exact() && keeps_zid(e); }
+// The plugin ABI (version 1) has no lines: rast's own exact engines draw them.
+bool line_engines(const Engine& e) { return exact_zid_engines(e) && e.kind != Engine::Kind::plugin; }
 
 // Float modes are bound only by float_within_bound: near an edge they may classify either way, so
 // exact coverage claims (shared edges, ties, translations) are not theirs to keep.
@@ -42,6 +44,8 @@ constexpr Property kProperties[] = {
      "union's area and does not depend on the order the triangles are cut in", reference_only, visible_area},
     {"msaa_visible_bound", "the resolved samples are within (cells a boundary meets) / N of the visible area",
      exact_zid_engines, msaa_visible_bound},
+    {"lines_zbuffer", "every sample holds the (z, id) least of the triangles covering it and the lines lighting "
+     "its pixel, judged exactly", line_engines, lines_zbuffer, true},
 };
 
 }  // namespace
@@ -50,6 +54,8 @@ Outcome Property::verdict_on(const Scene& scene, const Engine& engine) const {
     if (engine.contract && !engine.contract->renders(scene.samples))
         return Outcome::not_applicable("the engine does not render " + std::to_string(scene.samples) +
                                        " samples a pixel");
+    if (!scene.lines.empty() && !judges_lines)
+        return Outcome::not_applicable("the scene has lines, and " + std::string(name) + " judges triangles alone");
     try {
         return check(scene, engine);
     } catch (const EngineError&) {

@@ -28,13 +28,14 @@ using rast::fast::Fault;
 using rast::fast::Precision;
 using rast::Engine;
 
-// Broken variants written here, for the two properties that no fault inside the fast path breaks: the
+// Broken variants written here, for the properties that no fault inside the fast path breaks: the
 // wrapper changes what the fast path is given, as a careless caller or setup stage would.
 enum class Wrapper {
     none,
     culling_left_on,     // clockwise triangles dropped: back-face culling where none was asked for
     snap_by_truncation,  // vertices cut toward zero to 1/256 before the fixed8 path, not rounded
     throws_on_overlap,   // an exception (as from a failed allocation or check) where two triangles overlap
+    lines_last,          // lines ordered after every triangle, not in file order, ids then given back
 };
 
 struct Bite {
@@ -81,6 +82,19 @@ Engine broken(const Bite& b) {
             throw std::runtime_error("the engine gave up on overlapping triangles");
         Scene seen = s;
         for (Triangle& t : seen.triangles) t = given(t);
+        if (b.wrapper == Wrapper::lines_last) {
+            // Drawn with the triangles first, then named back: their (z, id) ties go the wrong way.
+            const std::vector<std::int32_t> ids = rast::triangle_ids(s);
+            std::vector<std::int32_t> back = ids;
+            for (std::size_t k = 0; k < s.lines.size(); ++k) {
+                seen.lines[k].id = static_cast<std::int32_t>(s.triangles.size() + k);
+                back.push_back(s.lines[k].id);
+            }
+            fb = rast::fast::render_with_fault(seen, {b.precision, 1}, b.fault);
+            for (std::int32_t& id : fb.ids)
+                if (id != Framebuffer::kNoTriangle) id = back[static_cast<std::size_t>(id)];
+            return;
+        }
         fb = rast::fast::render_with_fault(seen, {b.precision, 1}, b.fault);
     };
     e.covered_samples = [b, given](const Triangle& t, Viewport vp, int n) {
@@ -184,6 +198,7 @@ const Bite kBites[] = {
      "msaa_visible_bound"},
     {"bbox_one_short_msaa_visible_bound", Fault::bbox_one_short, Wrapper::none, Precision::fixed16,
      "msaa_visible_bound"},
+    {"lines_last_lines_zbuffer", Fault::none, Wrapper::lines_last, Precision::fixed8, "lines_zbuffer"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Faults, Bites, ::testing::ValuesIn(kBites),

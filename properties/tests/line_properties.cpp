@@ -1,6 +1,6 @@
 // Lines held to the diamond-exit rule as RapidCheck properties: Bresenham equals the exact reference on
-// snapped ends, and the rule's own symmetries hold on the reference. Not yet in the property registry:
-// scenes do not hold lines yet (issue #32), so these take segments, not scenes.
+// snapped ends, and the rule's own symmetries hold on the reference. These take segments, not scenes;
+// lines in scenes, against triangles in the z-buffer, are the registry's lines_zbuffer.
 #include <rast/exact_geometry.h>
 #include <rast/fast.h>
 #include <rast/line.h>

@@ -43,13 +43,14 @@ RAST_PROPERTY(area_tiling)
 RAST_PROPERTY(conforms)
 RAST_PROPERTY(visible_area)
 RAST_PROPERTY(msaa_visible_bound)
+RAST_PROPERTY(lines_zbuffer)
 
 // Every registered property has its test above.
 TEST(Properties, EveryPropertyIsTested) {
     const std::vector<std::string> tested{"watertight", "tie_rule", "winding_invariance", "translation_invariance",
                                           "order_independence", "fixed_matches_reference", "float_within_bound",
                                           "msaa_counts", "area_tiling", "conforms", "visible_area",
-                                          "msaa_visible_bound"};
+                                          "msaa_visible_bound", "lines_zbuffer"};
     std::vector<std::string> registered;
     for (const auto& p : rast::properties::all_properties()) registered.emplace_back(p.name);
     EXPECT_EQ(registered, tested);

@@ -26,8 +26,8 @@ namespace rast::properties {
 // precision, or a deliberately broken fast path in the bite tests.
 using rast::Engine;
 
-// The geometry whose samples `engine` must classify exactly: the scene itself, or its vertices snapped to
-// the engine's grid as its contract rounds, by the oracle's own snap (exact_geometry.h), not the fast
+// The geometry whose samples `engine` must classify exactly: the scene itself, or its vertices (and its
+// lines' ends) snapped to the engine's grid as its contract rounds, by the oracle's own snap (exact_geometry.h), not the fast
 // path's. Throws std::invalid_argument for a contract with rounding=any, which has no one geometry.
 Scene rasterized_geometry(const Engine& engine, const Scene& scene);
 Triangle rasterized_geometry(const Engine& engine, const Triangle& t);
@@ -50,6 +50,9 @@ struct Property {
     std::string_view statement;  // one sentence
     bool (*applies_to)(const Engine&);
     Outcome (*check)(const Scene&, const Engine&);
+    // Whether check judges a scene's lines: a property about triangles alone does not apply to a scene
+    // that has lines (its ids are not the triangles' indices, and its lines would go unjudged).
+    bool judges_lines = false;
 
     // check, where an engine that throws on the scene (valid input) fails the property instead of ending
     // the run: what the property tests keep and replay reports, like any other failure.
@@ -58,7 +61,7 @@ struct Property {
 
 // Every property, in a fixed order: watertight, tie_rule, winding_invariance, translation_invariance,
 // order_independence, fixed_matches_reference, float_within_bound, msaa_counts, area_tiling, conforms,
-// visible_area, msaa_visible_bound.
+// visible_area, msaa_visible_bound, lines_zbuffer.
 std::span<const Property> all_properties();
 // Throws std::invalid_argument naming the unknown property and the known ones.
 const Property& property(std::string_view name);

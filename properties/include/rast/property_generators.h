@@ -63,6 +63,11 @@ rc::Gen<Scene> overlapping_triangles();
 // few small triangles among them, on the same planes or their own.
 rc::Gen<Scene> layered_triangles();
 
+// Lines among triangles on a few dyadic planes, ids interleaved in a random file order: ends anywhere, on
+// pixel centres (rows, columns, diagonals, knight's moves) or along a row in a plane (a plane level in
+// y ties with such a line at every lit centre).
+rc::Gen<Scene> lines_among_triangles();
+
 // A window of at most 4 x 4 pixels anywhere in a scene of `scenes`, the triangles moved by whole pixels:
 // the judge of the visible area cuts each pixel at every crossing of its lines, so its scenes stay small.
 rc::Gen<Scene> small_window(rc::Gen<Scene> scenes);
