@@ -236,9 +236,8 @@ bool run_check(const CheckOptions& o) {
     if (o.corpus_out_given) check_output_paths({o.input.path}, {{"--corpus-out", case_file(o, engine).string(), true}});
     const bool mesh = o.input.is_mesh();
     const Scene scene = o.input.load();
-    std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, "
-              << scene.viewport.width << "x" << scene.viewport.height << ", " << scene.samples
-              << " sample(s) per pixel\nengine: " << engine.description << '\n';
+    std::cout << "scene:  " << o.input.path << ": " << summary(scene) << "\nengine: " << engine.description << '\n';
+    if (!scene.lines.empty()) std::cout << "lines:  not part of the check: they cover no area\n";
 
     if (mesh) {
         if (!read_mesh(o.input.path).closed) {

@@ -77,8 +77,7 @@ void run_diff(const DiffOptions& o) {
             samples += differing;
             pixels += differing > 0;
         }
-    std::cout << "scene:  " << o.input.path << ": " << scene.triangles.size() << " triangles, " << vp.width << "x"
-              << vp.height << ", " << scene.samples << " sample(s) per pixel\n"
+    std::cout << "scene:  " << o.input.path << ": " << summary(scene) << "\n"
               << "compare: reference (exact) vs " << engine.description << '\n'
               << "differing samples: " << samples << " of " << exact.ids.size() << '\n'
               << "differing pixels: " << pixels << " of " << std::size_t(vp.width) * vp.height << '\n';

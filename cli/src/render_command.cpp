@@ -121,8 +121,7 @@ void run_render(const RenderOptions& o) {
 
     std::size_t covered = 0;
     for (auto id : fb.ids) covered += id != Framebuffer::kNoTriangle;
-    std::cout << "scene:   " << name << ": " << scene.triangles.size() << " triangles, " << scene.viewport.width
-              << "x" << scene.viewport.height << ", " << scene.samples << " sample(s) per pixel\n"
+    std::cout << "scene:   " << name << ": " << summary(scene) << "\n"
               << "engine:  " << engine.description << ", " << std::fixed << std::setprecision(2) << ms
               << " ms\n" << std::defaultfloat
               << "covered: " << covered << " of " << fb.ids.size() << " samples\n";

@@ -142,4 +142,11 @@ Scene SceneInput::load() const {
     return with_samples(projection.scene);
 }
 
+std::string summary(const Scene& scene) {
+    std::string text = std::to_string(scene.triangles.size()) + " triangles, ";
+    if (!scene.lines.empty()) text += std::to_string(scene.lines.size()) + (scene.lines.size() == 1 ? " line, " : " lines, ");
+    return text + std::to_string(scene.viewport.width) + "x" + std::to_string(scene.viewport.height) + ", " +
+           std::to_string(scene.samples) + " sample(s) per pixel";
+}
+
 }  // namespace rast::cli

@@ -41,6 +41,9 @@ struct SceneInput {
     std::string options() const;
 };
 
+// "3 triangles, 2 lines, 64x48, 4 sample(s) per pixel" (the lines only where there are some).
+std::string summary(const Scene& scene);
+
 // Registers SCENE, --samples, --width/--height and the camera options on a subcommand; returns SCENE.
 // --width/--height and the camera options are refused with a .tri SCENE, which would ignore them.
 CLI::Option* add_scene_options(CLI::App& command, SceneInput& input);

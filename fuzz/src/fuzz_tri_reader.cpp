@@ -27,13 +27,22 @@ const std::string kName = "fuzz.tri";
 
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
+bool same_vertex(const rast::Vertex& u, const rast::Vertex& v) {
+    return same_bits(u.x, v.x) && same_bits(u.y, v.y) && same_bits(u.z, v.z);
+}
+
 bool same_scene(const rast::Scene& a, const rast::Scene& b) {
-    if (a.viewport != b.viewport || a.samples != b.samples || a.triangles.size() != b.triangles.size()) return false;
+    if (a.viewport != b.viewport || a.samples != b.samples || a.triangles.size() != b.triangles.size() ||
+        a.lines.size() != b.lines.size())
+        return false;
     for (std::size_t t = 0; t < a.triangles.size(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            const rast::Vertex &u = a.triangles[t].v[k], &v = b.triangles[t].v[k];
-            if (!same_bits(u.x, v.x) || !same_bits(u.y, v.y) || !same_bits(u.z, v.z)) return false;
-        }
+        for (int k = 0; k < 3; ++k)
+            if (!same_vertex(a.triangles[t].v[k], b.triangles[t].v[k])) return false;
+    for (std::size_t l = 0; l < a.lines.size(); ++l) {
+        if (a.lines[l].id != b.lines[l].id) return false;
+        for (int k = 0; k < 2; ++k)
+            if (!same_vertex(a.lines[l].segment.v[k], b.lines[l].segment.v[k])) return false;
+    }
     return true;
 }
 
@@ -43,10 +52,13 @@ void check_accepted(const rast::Scene& scene) {
     } catch (const std::invalid_argument& e) {
         finding(std::string("the reader accepted a scene beyond the limits: ") + e.what(), "");
     }
+    const auto finite = [](const rast::Vertex& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
     for (const rast::Triangle& t : scene.triangles)
         for (const rast::Vertex& v : t.v)
-            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-                finding("the reader accepted a non-finite coordinate", "");
+            if (!finite(v)) finding("the reader accepted a non-finite coordinate", "");
+    for (const rast::Line& l : scene.lines)
+        for (const rast::Vertex& v : l.segment.v)
+            if (!finite(v)) finding("the reader accepted a non-finite coordinate", "");
 }
 
 }  // namespace

@@ -128,5 +128,20 @@ TEST_F(ExtremeCoordinates, OverflowingDepthPlaneIsOrderedAndRoundedExactly) {
     }
 }
 
+// A line from -DBL_MAX to +DBL_MAX along row y = 1.5 of a 3 x 3 viewport lights the whole row in every
+// engine but float32 (Bresenham's ends in big integers, the DDA's in double); its depth, 2^-1 at one end
+// and -2^-1 at the other, is 0 at every pixel's foot up to far below an ulp, in front of the triangle at
+// depth 1/4 in row 1 and behind none. A second line at depth DBL_MAX lies behind everything.
+TEST_F(ExtremeCoordinates, LineFromEndToEndOfTheDoubles) {
+    const std::string scene = "viewport 3 3\n"
+                              "tri -8 -8 0x1p-2  24 -8 0x1p-2  -8 24 0x1p-2\n"
+                              "line -" + kDblMax + " 1.5 0x1p-1  " + kDblMax + " 1.5 -0x1p-1\n"
+                              "line -" + kDblMax + " 0.5 " + kDblMax + "  " + kDblMax + " 0.5 " + kDblMax + "\n";
+    for (const std::string& engine : {kReference, kFixed[0], kFixed[1], kFixed[2], kFloat[1]})
+        EXPECT_EQ(ids(scene, engine), "0 0 0\n1 1 1\n0 0 0\n") << engine;
+    // float32 rounds the ends to -inf and +inf: its DDA has no slope to step by and lights nothing (fast.h).
+    EXPECT_EQ(ids(scene, kFloat[0]), "0 0 0\n0 0 0\n0 0 0\n");
+}
+
 }  // namespace
 }  // namespace rast::robustness
