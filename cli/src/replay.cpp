@@ -176,7 +176,8 @@ CaseReport replay_case(const fs::path& file, std::span<const Engine> engines, En
         return {CaseReport::Status::error, std::string("ERROR ") + e.what(), {}};
     }
 
-    if (doc.scene.triangles.empty()) return error_report(file, {0, "has no triangle: it tests nothing"});
+    if (doc.scene.triangles.empty() && doc.scene.lines.empty())
+        return error_report(file, {0, "has no triangle and no line: it tests nothing"});
 
     properties::CaseCheck result = properties::check_case(doc.scene, selected, engines);
     std::vector<Failure>& failures = result.failures;

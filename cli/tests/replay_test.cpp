@@ -137,7 +137,7 @@ TEST_F(Replay, CasesThatTestNothingAreErrors) {
                   ":2: a named property checks nothing (translation_invariance [reference]: no whole-pixel shift "
                   "keeps every coordinate exact)");
     EXPECT_EQ(rast::cli::replay_case(dir / "empty.tri", engines).line,
-              "ERROR " + (dir / "empty.tri").string() + ": has no triangle: it tests nothing");
+              "ERROR " + (dir / "empty.tri").string() + ": has no triangle and no line: it tests nothing");
     // Replayed on the reference alone, a float mode's property applies to no engine.
     std::ofstream(dir / "float.tri") << "# properties: float_within_bound\nviewport 2 2\ntri 0 0 0  2 0 0  0 2 0\n";
     EXPECT_EQ(rast::cli::replay_case(dir / "float.tri", std::vector{rast::reference_engine()}).line,
