@@ -76,6 +76,14 @@ void expect_arity(const std::vector<std::string_view>& tokens, std::size_t count
                                          std::to_string(got) + (got == 1 ? " value" : " values"));
 }
 
+// x, y and z from tokens[first], tokens[first + 1] and tokens[first + 2].
+Vertex parse_vertex(const std::vector<std::string_view>& tokens, std::size_t first, const std::string& file,
+                    std::int64_t line) {
+    return {detail::parse_finite_double(tokens[first], file, line),
+            detail::parse_finite_double(tokens[first + 1], file, line),
+            detail::parse_finite_double(tokens[first + 2], file, line)};
+}
+
 // Runs a check from scene_limits.h and reports its complaint at the given line.
 template <class Check>
 void at_line(const std::string& file, std::int64_t line, Check check) {
@@ -108,20 +116,12 @@ TriDocument read_tri_document(std::istream& in, const std::string& name) {
         if (keyword == "tri") {
             expect_arity(tokens, 9, "9 numbers (three vertices x y z)", name, line_number);
             Triangle t;
-            for (int k = 0; k < 3; ++k) {
-                t.v[k].x = detail::parse_finite_double(tokens[1 + 3 * k], name, line_number);
-                t.v[k].y = detail::parse_finite_double(tokens[2 + 3 * k], name, line_number);
-                t.v[k].z = detail::parse_finite_double(tokens[3 + 3 * k], name, line_number);
-            }
+            for (std::size_t k = 0; k < 3; ++k) t.v[k] = parse_vertex(tokens, 1 + 3 * k, name, line_number);
             doc.scene.triangles.push_back(t);
         } else if (keyword == "line") {
             expect_arity(tokens, 6, "6 numbers (two ends x y z)", name, line_number);
             Segment segment;
-            for (int k = 0; k < 2; ++k) {
-                segment.v[k].x = detail::parse_finite_double(tokens[1 + 3 * k], name, line_number);
-                segment.v[k].y = detail::parse_finite_double(tokens[2 + 3 * k], name, line_number);
-                segment.v[k].z = detail::parse_finite_double(tokens[3 + 3 * k], name, line_number);
-            }
+            for (std::size_t k = 0; k < 2; ++k) segment.v[k] = parse_vertex(tokens, 1 + 3 * k, name, line_number);
             append_line(doc.scene, segment);
         } else if (keyword == "viewport") {
             if (viewport_line != 0)
