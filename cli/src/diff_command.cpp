@@ -82,8 +82,9 @@ void run_diff(const DiffOptions& o) {
               << "differing samples: " << samples << " of " << exact.ids.size() << '\n'
               << "differing pixels: " << pixels << " of " << std::size_t(vp.width) * vp.height << '\n';
     if (!o.image_out) return;
-    const Image reference = resolve_ids(exact);
-    const Image panels = side_by_side({reference, resolve_ids(fast), disagreement(exact, fast, reference)}, scale);
+    const Image reference = resolve_ids(exact, scene.lines);
+    const Image panels =
+        side_by_side({reference, resolve_ids(fast, scene.lines), disagreement(exact, fast, reference)}, scale);
     write_file_atomic(*o.image_out, encode_png(panels));
     std::cout << "wrote " << *o.image_out << " (reference | " << engine.description
               << " | disagreeing pixels in magenta), magnified " << scale << "x\n";

@@ -14,11 +14,12 @@
 
 namespace rast::cli {
 
-std::array<std::uint8_t, 3> id_colour(std::int32_t id) {
+std::array<std::uint8_t, 3> id_colour(std::int32_t id, bool line) {
     if (id < 0) return {16, 16, 24};
     // Golden-ratio hue steps keep neighbouring ids apart; fixed saturation and value keep them readable.
+    // A line's colour is a pale tint, to stand out on triangles and on the background alike.
     const double hue = std::fmod(0.13 + 0.6180339887498949 * id, 1.0) * 6.0;
-    const double s = 0.65, v = 0.95;
+    const double s = line ? 0.3 : 0.65, v = line ? 1.0 : 0.95;
     const int sector = static_cast<int>(hue);
     const double f = hue - sector;
     const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
@@ -35,14 +36,22 @@ std::array<std::uint8_t, 3> id_colour(std::int32_t id) {
             static_cast<std::uint8_t>(c[2] * 255 + 0.5)};
 }
 
-Image resolve_ids(const Framebuffer& fb) {
+Image resolve_ids(const Framebuffer& fb, std::span<const Line> lines) {
     const int w = fb.viewport.width, h = fb.viewport.height;
     Image image(w, h);
+    std::vector<bool> is_line;
+    for (const Line& line : lines) {
+        if (line.id < 0) continue;
+        if (is_line.size() <= static_cast<std::size_t>(line.id)) is_line.resize(static_cast<std::size_t>(line.id) + 1);
+        is_line[static_cast<std::size_t>(line.id)] = true;
+    }
+    const auto drawn_line = [&](std::int32_t id) { return id >= 0 && static_cast<std::size_t>(id) < is_line.size() && is_line[static_cast<std::size_t>(id)]; };
     for (int j = 0; j < h; ++j) {
         for (int i = 0; i < w; ++i) {
             std::array<int, 3> sum{};
             for (int s = 0; s < fb.samples; ++s) {
-                const auto c = id_colour(fb.id(i, j, s));
+                const std::int32_t id = fb.id(i, j, s);
+                const auto c = id_colour(id, drawn_line(id));
                 for (int k = 0; k < 3; ++k) sum[k] += c[k];
             }
             std::uint8_t* out = image.at(i, h - 1 - j);

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,12 +22,12 @@ struct Image {
     std::uint8_t* at(int x, int row) { return &rgb[(static_cast<std::size_t>(row) * width + x) * 3]; }
 };
 
-// A stable, well-separated colour for a triangle id; the background (-1) is near-black.
-std::array<std::uint8_t, 3> id_colour(std::int32_t id);
+// A stable, well-separated colour for an id, paler for a line's; the background (-1) is near-black.
+std::array<std::uint8_t, 3> id_colour(std::int32_t id, bool line = false);
 
-// The framebuffer as a picture: each pixel the average of its samples' id colours, rows flipped so the
-// top row (j = H - 1) comes first.
-Image resolve_ids(const Framebuffer& fb);
+// The framebuffer as a picture: each pixel the average of its samples' id colours (`lines` says which ids
+// are lines), rows flipped so the top row (j = H - 1) comes first.
+Image resolve_ids(const Framebuffer& fb, std::span<const Line> lines = {});
 
 // The ideal antialiased picture: each pixel the id colours weighted by the exact visible areas, the
 // background's colour where nothing is seen.

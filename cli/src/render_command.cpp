@@ -155,7 +155,7 @@ void run_render(const RenderOptions& o) {
         std::vector<Image> pictures;
         if (o.coverage == "area") pictures.push_back(area_image(scene.viewport, area));
         else if (o.coverage == "depth") pictures.push_back(depth_image(fb));
-        else if (o.coverage == "samples") pictures.push_back(resolve_ids(fb));
+        else if (o.coverage == "samples") pictures.push_back(resolve_ids(fb, scene.lines));
         else pictures.push_back(visible_image(*visible));
         if (o.coverage == "visible-error") {
             for (const int n : kErrorSampleCounts) {
@@ -189,7 +189,7 @@ void add_render_command(CLI::App& app) {
     for (CLI::Option* view : mesh_view_options(*cmd)) def->excludes(view);
     add_engine_options(*cmd, o->engine);
     auto* image =
-        cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour")
+        cmd->add_option("-o,--output", o->image_out, "Write a PNG picture: each triangle id in its own colour, lines paler")
             ->check(png_name);
     // Both shape the picture only: without one they would be ignored.
     cmd->add_option("--magnify", o->magnify, "Magnify the picture N times, nearest neighbour, so pixels stay sharp")
@@ -205,7 +205,7 @@ void add_render_command(CLI::App& app) {
         ->capture_default_str()
         ->needs(image);
     cmd->add_option("--ids-out", o->ids_out,
-                    "Write the id buffer: H lines of W ids of the triangle owning each pixel centre, or -1");
+                    "Write the id buffer: H lines of W ids of the triangle or line owning each pixel centre, or -1");
     cmd->add_option("--depth-out", o->depth_out,
                     "Write the depth buffer: H lines of W depths at pixel centres (inf where empty)");
     cmd->add_option("--coverage-out", o->coverage_out,
