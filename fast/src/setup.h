@@ -412,4 +412,10 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
     return s;
 }
 
+// What the tiles need of the whole scene: the input triangles, for the exact depth order.
+struct SceneView {
+    std::span<const Triangle> triangles;
+    const Context& c;
+};
+
 }  // namespace rast::fast::detail

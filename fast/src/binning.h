@@ -1,0 +1,109 @@
+// Binning, one stage of the fast path (engine.h): each triangle of a contiguous id range placed, set up
+// where it is big, and appended to the bins of the screen tiles its bounding box reaches, in id order.
+#pragma once
+
+#include "setup.h"
+#include "validate.h"
+
+#include <rast/fast_faults.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace rast::fast::detail {
+
+inline bool is_small(const Placed& p) { return p.path != Path::wide && is_small(p.i_lo, p.i_hi, p.j_lo, p.j_hi); }
+
+struct SmallTriangle {
+    Placed p;
+    std::int32_t id;
+};
+
+// A big triangle's entry in a tile's bin: its id beside the index of its setup, so that merging the
+// bins by id reads no setup it does not rasterize yet.
+struct BigEntry {
+    std::int32_t id;
+    std::uint32_t setup;  // index into Chunk::big
+};
+
+// The triangles of one contiguous id range, binned per tile in id order.
+struct Chunk {
+    std::optional<std::size_t> non_finite;  // the first triangle with a non-finite coordinate: binning stopped there
+    std::vector<Setup> big;
+    std::vector<std::vector<SmallFixed>> fixed_bins;
+    std::vector<std::vector<SmallTriangle>> small_bins;
+    std::vector<std::vector<BigEntry>> big_bins;
+};
+
+// Appends to a tile's bin. The bins are written at as many places as there are tiles, each cache line
+// for the first time: the line that will hold the end of the bin's next record (it starts where this one
+// ended) is fetched now, for writing, rather than when that record comes (binning small triangles spent
+// twice its share of instructions in time). An address, not a pointer: it may lie past the bin's
+// storage, and a prefetch never faults.
+template <class Record>
+void append(std::vector<Record>& bin, const Record& record) {
+    bin.push_back(record);
+    const std::uintptr_t next_end = reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + sizeof(Record) - 1;
+    __builtin_prefetch(reinterpret_cast<const void*>(next_end), 1);
+}
+
+template <Fault F>
+void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
+               std::size_t tiles) {
+    // Emptied, keeping the bins' storage of the last render (Workspace).
+    chunk.non_finite.reset();
+    chunk.big.clear();
+    const auto empty_bins = [tiles](auto& bins) {
+        bins.resize(tiles);
+        for (auto& bin : bins) bin.clear();
+    };
+    empty_bins(chunk.fixed_bins);
+    empty_bins(chunk.small_bins);
+    empty_bins(chunk.big_bins);
+    const bool lean = is_fixed(scene.c.precision) && scene.c.fixed_fits;
+    if (lean) {
+        // Room for a uniform spread with some slack, so that most bins never reallocate and copy; pages
+        // of it never written are never touched.
+        const std::size_t expected = (end - begin) / tiles;
+        for (std::vector<SmallFixed>& bin : chunk.fixed_bins) bin.reserve(expected + expected / 2 + 8);
+    }
+    // Pixel indices inside the viewport are not negative: unsigned division is a shift.
+    const auto tile_of = [](int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); };
+    for (std::size_t id = begin; id != end; ++id) {
+        const Triangle& triangle = scene.triangles[id];
+        SmallFixed record;
+        const Lane lane = lean ? place_small_fixed<F>(triangle, static_cast<std::int32_t>(id), scene.c, record)
+                               : Lane::general;
+        // Checked here rather than in a pass of its own: the triangles are read once. The small lane
+        // only takes corners whose x and y are within the fixed range, hence finite.
+        const bool finite = lane == Lane::general ? is_finite(triangle)
+                                                  : std::isfinite(triangle.v[0].z) && std::isfinite(triangle.v[1].z) &&
+                                                        std::isfinite(triangle.v[2].z);
+        if (!finite) {
+            chunk.non_finite = id;
+            return;
+        }
+        if (lane == Lane::culled) continue;
+        if (lane == Lane::small_fixed) {
+            for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
+                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
+                    append(chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx], record);
+            continue;
+        }
+        const std::optional<Placed> placed = place<F>(triangle, scene.c);
+        if (!placed) continue;
+        const bool small = is_small(*placed);
+        if (!small) chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
+        for (int ty = tile_of(placed->j_lo); ty <= tile_of(placed->j_hi); ++ty)
+            for (int tx = tile_of(placed->i_lo); tx <= tile_of(placed->i_hi); ++tx) {
+                const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
+                if (small) append(chunk.small_bins[tile], {*placed, static_cast<std::int32_t>(id)});
+                else append(chunk.big_bins[tile], {static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)});
+            }
+    }
+}
+
+}  // namespace rast::fast::detail

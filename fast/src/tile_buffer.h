@@ -1,0 +1,173 @@
+// A thread's tile, one stage of the fast path (engine.h): its z-buffer with the depths' error bounds, its
+// hierarchical-z far depth, its exact planes, and the wide path's spans it keeps for a row of tiles.
+#pragma once
+
+#include "exact.h"
+#include "kernels.h"
+#include "setup.h"
+#include "spans.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace rast::fast::detail {
+
+// The wide path's spans (spans_of) of the triangles the tiles of one row of screen tiles need them for,
+// each found at the first such tile and kept for the others, which need the same rows: a big triangle
+// is partial in several tiles of a row. A thread keeps them for the row it is in, and at most `kept`
+// of them (more triangles' are found again when needed), so they take memory for one row of tiles,
+// not for the whole screen, and not for all of a scene's triangles. Only for the render they were found
+// in: Setups are named by their addresses, which a later render's may reuse.
+class BandSpans {
+public:
+    static constexpr std::size_t kKept = std::size_t{1} << 22;  // 32 MB
+
+    explicit BandSpans(std::size_t kept = kKept) : kept_(kept) {}
+    // Setup t's spans over the pixel rows [j0, j1], all in one row of tiles (the tiles of a row ask for
+    // the same rows of a triangle: its own rows there). Valid until the next call.
+    std::span<const Span> of(const Setup& t, const Context& c, int j0, int j1) {
+        const std::size_t count = static_cast<std::size_t>(j1 - j0 + 1) * c.offsets.size();
+        if (j0 / kTile != band_) {
+            clear();
+            band_ = j0 / kTile;
+        }
+        auto [entry, fresh] = at_.try_emplace(&t);  // one lookup, found or not
+        if (!fresh && entry->second.j0 == j0 && entry->second.j1 == j1)
+            return std::span<const Span>(spans_).subspan(entry->second.at, count);
+        if (spans_.size() + count > kept_) {
+            forget();
+            entry = at_.try_emplace(&t).first;
+        }
+        const Kept kept{spans_.size(), j0, j1};
+        entry->second = kept;
+        spans_.resize(spans_.size() + count);
+        spans_of(t, c, j0, j1, std::span(spans_).subspan(kept.at, count));
+        return std::span<const Span>(spans_).subspan(kept.at, count);
+    }
+    // Forgets every triangle's spans, keeping the storage.
+    void clear() {
+        forget();
+        band_ = -1;
+    }
+
+private:
+    void forget() {
+        spans_.clear();
+        at_.clear();
+    }
+    std::size_t kept_;
+    int band_ = -1;  // the row of tiles, j / kTile
+    std::vector<Span> spans_;
+    struct Kept {
+        std::size_t at;  // where in spans_
+        int j0, j1;      // the rows
+    };
+    std::unordered_map<const Setup*, Kept> at_;
+};
+
+// One tile's z-buffer, one plane per sample index so that a sample row is contiguous for the kernels;
+// kRowLanes of padding lets the last row's vector loads run past its end. Sized to the viewport's
+// largest tile (a small viewport's is small) and reused from tile to tile, and by a Workspace from
+// render to render. Each on cache lines of its own: the threads' buffers sit side by side in the
+// Workspace, and each thread writes its own bookkeeping for every triangle.
+struct alignas(64) TileBuffer {
+    // For render number `render` of a Workspace, of this sample count and viewport, unless already fitted
+    // for it: storage kept when large enough.
+    void fit(std::uint64_t render, int samples, Viewport vp) {
+        if (render == fitted_for) return;
+        cols = std::min(kTile, vp.width);
+        rows = std::min(kTile, vp.height);
+        size = static_cast<std::size_t>(samples) * rows * cols;
+        z.resize(size + kRowLanes, std::numeric_limits<double>::infinity());
+        ids.resize(size + kRowLanes, Framebuffer::kNoTriangle);
+        planes = ExactPlanes();  // its planes are named by the ids of the last render's scene
+        wide.clear();
+        fitted_for = render;
+    }
+    // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
+    void clear() {
+        std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
+        std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
+        stored_err = 0;
+        per_sample = false;
+        far = std::numeric_limits<double>::infinity();
+        since_far = 0;
+    }
+    // A triangle whose depths have error bound e is about to be composed. The tile keeps one bound for
+    // all its stored depths while they are of one order (the depth test then loads and stores a third
+    // less). A bound far above the tile's (a near-degenerate triangle, or depths of a larger magnitude)
+    // would make later comparisons exact, and one far below it would be compared with a bound too coarse
+    // for it: from the first such triangle on, the tile keeps a bound per sample, the ones stored before
+    // with the tile's. An infinite bound decides nothing: such a triangle's depths are all stored by
+    // the exact comparison, each with its own bound (stored()).
+    void admit(double e) {
+        constexpr double kSpread = 0x1p20;
+        if (!per_sample && stored_err > 0 && !(e <= kSpread * stored_err && stored_err <= kSpread * e)) {
+            err.resize(size + kRowLanes);
+            for (std::size_t k = 0; k < size; ++k) err[k] = ids[k] < 0 ? 0 : stored_err;
+            per_sample = true;
+        }
+        if (e < std::numeric_limits<double>::infinity()) storing(e);
+    }
+    // A depth with error bound e is stored at `slot`.
+    void stored(std::size_t slot, double e) {
+        if (per_sample) err[slot] = e;
+        storing(e);
+    }
+    DepthRows rows_at(std::size_t at) {
+        return {z.data() + at, per_sample ? err.data() + at : nullptr, ids.data() + at, cols};
+    }
+    // far := the largest z over the samples of pixels [0, width) x [0, height), +infinity while any is
+    // empty. Exact stored depths only ever come nearer, so an old far, with stored_err, still bounds them.
+    void refresh_far(int samples, int width, int height) {
+        since_far = 0;
+        double largest = -std::numeric_limits<double>::infinity();
+        for (int s = 0; s < samples; ++s)
+            for (int row = 0; row < height; ++row) {
+                largest = std::max(largest, farthest(&z[at(s, row, 0)], static_cast<std::size_t>(width)));
+                if (largest == std::numeric_limits<double>::infinity()) return;
+            }
+        far = largest;
+    }
+    std::size_t at(int s, int row, int col) const {
+        return (static_cast<std::size_t>(s) * rows + row) * cols + col;
+    }
+    std::uint64_t fitted_for = 0;  // the render fit() last fitted it for (0: none)
+    int cols = 0, rows = 0;  // the row stride and rows per sample plane
+    std::size_t size = 0;
+    std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample (admit() allocates it)
+    std::vector<std::int64_t> ids;
+    double stored_err = 0;  // an error bound of every depth stored since clear()
+    bool per_sample = false;
+    ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
+    BandSpans wide;
+    double far = std::numeric_limits<double>::infinity();
+    std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
+
+private:
+    void storing(double e) { stored_err = std::max(stored_err, e); }
+};
+
+// A tile's far depth is brought up to date once blocks of this many times its samples were rasterized
+// into it: the refresh reads the tile once, amortized over at least as many block samples.
+inline constexpr std::size_t kFarRefresh = 4;
+
+// Hierarchical z: whether the triangle is behind everything stored in the tile at every sample of
+// [i0, i1] x [j0, j1]. Its plane's smallest value there is at a corner of the samples' rectangle (inside
+// the bounding box its error bound covers). far bounds every depth stored since it was found (they only
+// come nearer), and stored_err their distance from the exact depths; so, as in the kernels' depth test
+// (the gap beyond the margin, both rounded: kernels.h), the exact depths are strictly ordered, and the
+// triangle wins no sample.
+inline bool behind_tile(const Plane& p, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
+    const double px = p.a >= 0 ? i0 + c.ox_min : i1 + c.ox_max;
+    const double py = p.b >= 0 ? j0 + c.oy_min : j1 + c.oy_max;
+    const double nearest = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+    return nearest - tile.far > p.err + tile.stored_err;
+}
+
+}  // namespace rast::fast::detail
