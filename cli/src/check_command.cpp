@@ -122,6 +122,7 @@ std::vector<std::array<std::uint32_t, 3>> edge_numbers(const std::vector<Triangl
 std::vector<Violation> overlaps_along_shared_edges(const Scene& scene, const Coverage& coverage) {
     std::vector<Violation> found;
     const auto numbers = edge_numbers(scene.triangles);
+    const std::vector<std::int32_t> id_of = triangle_ids(scene);  // as --ids-out names them, lines counted
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;  // (edge number, triangle) at one sample
     for (std::size_t index = 0; index < coverage.samples(); ++index) {
         const auto ids = coverage.at(index);
@@ -142,7 +143,8 @@ std::vector<Violation> overlaps_along_shared_edges(const Scene& scene, const Cov
         }
         if (least)
             found.push_back({index, "covered " + std::to_string(ids.size()) + " times, by triangles " +
-                                        std::to_string(least->first) + " and " + std::to_string(least->second) +
+                                        std::to_string(id_of[least->first]) + " and " +
+                                        std::to_string(id_of[least->second]) +
                                         ", which share an edge"});
     }
     return found;

@@ -86,7 +86,7 @@ void note_unbounded_triangles(const Scene& scene, const Engine& engine) {
             first = count++ == 0 ? k : first;
     if (count > 0)
         std::cerr << "rast: note: " << engine.name << " cannot bound the edge functions of " << count
-                  << (count == 1 ? " triangle" : " triangles") << " (the first: triangle " << first
+                  << (count == 1 ? " triangle" : " triangles") << " (the first: triangle " << triangle_ids(scene)[first]
                   << "), whose coordinates may overflow it: it may draw them wrongly or not at all\n";
 }
 

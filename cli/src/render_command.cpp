@@ -108,6 +108,10 @@ void run_render(const RenderOptions& o) {
     reference::Stats stats;
     const auto meter = stderr_meter("reference render", "triangles");
     const Engine engine = o.engine.make(&stats, meter->progress());
+    if (panels > 1 && !scene.lines.empty())
+        throw std::invalid_argument("--coverage visible-error measures samples against the exact visible area, "
+                                    "in which lines (no area) have no part; the scene has " +
+                                    std::to_string(scene.lines.size()) + " lines");
     if (panels > 1 && engine.contract) {
         for (const int n : kErrorSampleCounts)
             if (!engine.contract->renders(n))

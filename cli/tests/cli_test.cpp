@@ -119,6 +119,25 @@ TEST_F(Cli, WritesTheExactVisibleArea) {
     EXPECT_EQ(be32(20), 3u);
 }
 
+// The same planes with a line in front, first in the file: its id 0 moves the triangles to 1 and 2 in the
+// visible areas (lines have none), and in the id buffer it holds the top row it lights; below it the centres
+// with i + j = 3 lie on the hypotenuse, a right edge, and stay empty. The error picture
+// against the visible ideal is refused: the line's samples would count as error.
+TEST_F(Cli, VisibleAreaNamesTrianglesByIdAmongLines) {
+    const std::string scene = file("crossing-line.tri", "viewport 4 3\nline 0.5 2.5 -9  4.5 2.5 -9\n"
+                                                        "tri -4 -4 -4  8 -4 8  -4 8 -4\n"
+                                                        "tri -4 -4 -2  8 -4 -2  -4 8 4\n");
+    const Result r = rast("render " + scene + " --visible-out " + out("visible.txt") + " --ids-out " + out("ids.txt"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(read("visible.txt"), "1:1 1:1/6,2:1/3 - -\n"
+                                   "1:3/4,2:1/4 2:1 2:1/2 -\n"
+                                   "1:1/4,2:3/4 2:1 2:1 2:1/2\n");
+    EXPECT_EQ(read("ids.txt"), "0 0 0 0\n1 2 -1 -1\n2 2 2 -1\n");
+    const Result refused = rast("render " + scene + " -o " + out("error.png") + " --coverage visible-error");
+    EXPECT_EQ(refused.status, 2) << refused.out;
+    EXPECT_NE(refused.out.find("lines (no area) have no part"), std::string::npos) << refused.out;
+}
+
 TEST_F(Cli, WritesAPictureAndASummary) {
     const Result r = rast("render --default -o " + (dir / "out.png").string());
     ASSERT_EQ(r.status, 0) << r.out;

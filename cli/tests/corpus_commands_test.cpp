@@ -134,6 +134,18 @@ TEST_F(CorpusCommands, TheKeptCaseNamesTheCommandThatReproducesIt) {
     EXPECT_TRUE(contains(findings, "covered 2 times")) << r.out;
 }
 
+// Lines take ids too: with a line before the fold's two triangles, check names them as --ids-out does,
+// 1 and 2, and says the line is not part of the count.
+TEST_F(CorpusCommands, CheckNamesTrianglesByTheirIdsAmongLines) {
+    const std::string scene = file("line-and-fold.tri", "viewport 4 4\nline 0 3.5 0  4 3.5 0\n"
+                                                        "tri 0 0 0  4 0 0  0 4 0\ntri 0 0 0  4 0 0  4 4 0\n");
+    const Result r = rast("check " + scene + " --corpus-out " + (dir / "found").string());
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "scene:  " + scene + ": 2 triangles, 1 line, 4x4, 1 sample(s) per pixel\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "lines:  not part of the check: they cover no area\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "covered 2 times, by triangles 1 and 2, which share an edge\n")) << r.out;
+}
+
 // Every sample of a 4x4 viewport under a big triangle 0 that shares no edge. On it, three folds: A = 1 and B = 2
 // (kFold), B and C = 3 along x = 4 (C tiles A across x + y = 4, owning the samples on it), and A and D = 4 along
 // x = 0 (D owns only its left edge: (0.5, 1.5) and (0.5, 2.5)). E = 5 folds over triangle 0 along its bottom

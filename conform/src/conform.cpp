@@ -196,8 +196,12 @@ Verdict battery(const Engine& engine, std::span<const Case> corpus, const Option
 
 Scene drop_triangles(Scene scene, const std::function<bool(const Scene&)>& fails) {
     for (std::size_t k = scene.triangles.size(); k-- > 0;) {
+        // Without triangle k; the lines after it in file order move down one id.
         Scene without = scene;
+        const std::int32_t id = triangle_ids(scene)[k];
         without.triangles.erase(without.triangles.begin() + static_cast<std::ptrdiff_t>(k));
+        for (Line& line : without.lines)
+            if (line.id > id) --line.id;
         if (!without.triangles.empty() && fails(without)) scene = std::move(without);
     }
     return scene;

@@ -52,6 +52,27 @@ TEST(DropTriangles, KeepsOnlyWhatTheFailureNeeds) {
     EXPECT_EQ(shrunk.triangles[1].v[0].x, 4);
 }
 
+// Lines keep their place in file order: lines at ids 0, 3 and 7 among six triangles (ids 1, 2, 4, 5, 6,
+// 8). With triangles 1 and 4 (ids 2 and 6) kept, the file reads line, triangle 1, line, triangle 4, line:
+// the lines are ids 0, 2 and 4, the triangles 1 and 3.
+TEST(DropTriangles, RenumbersTheLinesAfterWhatItDrops) {
+    Scene s{{4, 4}, 1, {}};
+    for (int k = 0; k < 6; ++k) s.triangles.push_back(Triangle{{Vertex{double(k), 0, 0}, Vertex{1, 0, 0}, Vertex{0, 1, 0}}});
+    s.lines = {{Segment{}, 0}, {Segment{}, 3}, {Segment{}, 7}};
+    const auto fails = [](const Scene& scene) {
+        int seen = 0;
+        for (const Triangle& t : scene.triangles) seen += t.v[0].x == 1 || t.v[0].x == 4;
+        return seen == 2;
+    };
+    const Scene shrunk = drop_triangles(s, fails);
+    ASSERT_EQ(shrunk.triangles.size(), 2u);
+    ASSERT_EQ(shrunk.lines.size(), 3u);
+    EXPECT_EQ(shrunk.lines[0].id, 0);
+    EXPECT_EQ(shrunk.lines[1].id, 2);
+    EXPECT_EQ(shrunk.lines[2].id, 4);
+    EXPECT_EQ(triangle_ids(shrunk), (std::vector<std::int32_t>{1, 3}));
+}
+
 TEST(CaseSeed, DiffersForEveryShardAndProperty) {
     std::set<std::uint64_t> seeds;
     for (int shard = 0; shard < 8; ++shard)

@@ -28,11 +28,13 @@ Bounded line_depth(const Segment& s, double cx, double cy) {
     const Bounded n = add(mul(sub(exact(cx), exact(a.x), wp), dx, wp), mul(sub(exact(cy), exact(a.y), wp), dy, wp), wp);
     const Bounded d = add(mul(dx, dx, wp), mul(dy, dy, wp), wp);
     const Bounded gap = sub(n, d, wp);  // n - d
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    // An enclosure that overflowed says nothing (-inf <= -inf would decide the clamp).
+    if (!(n.e < kInfinity && gap.e < kInfinity)) return {a.z, kInfinity};
     // The comparisons of a double with a bound are exact; kSlack covers the bounds' own rounding.
     if (n.v <= -n.e * kSlack) return exact(a.z);  // n <= 0: the start (also where d = 0, for n = 0 then)
     if (gap.v >= gap.e * kSlack) return exact(b.z);
-    if (!(n.v > n.e * kSlack && gap.v < -gap.e * kSlack))
-        return {a.z, std::numeric_limits<double>::infinity()};  // the clamp is undecided
+    if (!(n.v > n.e * kSlack && gap.v < -gap.e * kSlack)) return {a.z, kInfinity};  // the clamp is undecided
     const Bounded z = add(exact(a.z), mul(div(n, d, wp), sub(exact(b.z), exact(a.z), we), we), we);
     return {z.v, z.e * kSlack};
 }

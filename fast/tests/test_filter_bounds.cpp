@@ -323,6 +323,12 @@ TEST(LineDepthBound, ClampsExactlyOrNotAtAll) {
     const Bounded middle = line_depth(s, 2.5, 7.5);
     EXPECT_LE(std::abs(middle.v - 0.4), middle.e);
     EXPECT_LT(middle.e, 1e-15);
+    // A review's case: n's enclosure overflows to -inf +- inf, which once read as "n <= 0" and gave the
+    // start's z exactly, while the exact n is positive.
+    const Segment far{{Vertex{0x1.0000000000002p+60, -0x1.f30567547a34cp+60, 0},
+                       Vertex{0x1.ffffffffffffcp+963, 0x1.06a881a323e6bp+963, 1}}};
+    EXPECT_GT(exact_line_depth(far, 127.5, 0.5), 0);
+    EXPECT_EQ(line_depth(far, 127.5, 0.5).e, std::numeric_limits<double>::infinity());
 }
 
 // --- The float modes' edge function ----------------------------------------------------------------

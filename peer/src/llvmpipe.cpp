@@ -194,6 +194,9 @@ Llvmpipe::~Llvmpipe() = default;
 
 void Llvmpipe::load(const Scene& scene) {
     const Viewport vp = scene.viewport;
+    if (!scene.lines.empty())
+        throw std::invalid_argument("llvmpipe: draws triangles only, the scene has " +
+                                    std::to_string(scene.lines.size()) + " lines");
     if (scene.samples != 1) {
         throw std::invalid_argument("llvmpipe: renders 1 sample per pixel, the scene asks for " +
                                     std::to_string(scene.samples));

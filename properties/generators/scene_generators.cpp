@@ -393,10 +393,16 @@ rc::Gen<Scene> lines_among_triangles() {
         std::vector<Segment> segments;
         for (int k = *rc::gen::inRange(1, 6); k > 0; --k) {
             Segment s;
-            switch (*rc::gen::inRange(0, 3)) {
+            switch (*rc::gen::inRange(0, 4)) {
                 case 0:  // anywhere
                     s = {{vertex_in(vp), vertex_in(vp)}};
                     break;
+                case 3: {  // reaching out to 2^60: big integers in Bresenham, exact depths
+                    Vertex far = vertex_in(vp);
+                    (*rc::gen::inRange(0, 2) == 0 ? far.x : far.y) = huge();
+                    s = {{vertex_in(vp), far}};
+                    break;
+                }
                 case 1: {  // centre to centre along a row, a column, a diagonal or a knight's move
                     const auto [dx, dy] = *rc::gen::element(std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1},
                                                             std::pair{1, -1}, std::pair{2, 1}, std::pair{1, -2});

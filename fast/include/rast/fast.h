@@ -35,11 +35,17 @@
 // dynamic dispatch: SSE4, AVX2, AVX-512 where present): coverage is exact or evaluated in the same IEEE
 // operations everywhere, and each tile composes its triangles in id order.
 //
+// Lines (Scene::lines, rast/scene.h). After the triangles, each line's pixels (bresenham() on the fixed
+// mode's grid, dda() in the float modes' type) are offered to the finished z-buffer on one thread; a lit
+// pixel's samples take the line's depth at the pixel, ordered exactly against what is stored (a line's
+// depth filter, then exact arithmetic), so lines and triangles share the (z, id) order.
+//
 // Input. Every function throws std::invalid_argument for a viewport that is not 1..2^24 pixels on each
 // side or whose samples number more than 2^32 (a framebuffer of 48 GiB), a sample count other than 1, 4,
-// 8, 16, a non-finite coordinate (naming the triangle and the vertex) or sample position, a Precision
-// outside the enum, or a thread count outside 0..1024: the sizes before anything is allocated for them,
-// the coordinates while the triangles are binned, and always before the target framebuffer is touched.
+// 8, 16, a non-finite coordinate (naming the triangle and the vertex, or the line and the end) or sample
+// position, lines' ids that triangle_ids() refuses, a Precision outside the enum, or a thread count
+// outside 0..1024: the sizes before anything is allocated for them, the coordinates while the triangles
+// are binned, and always before the target framebuffer is touched.
 // name() alone answers "unknown" for such a Precision.
 #pragma once
 
@@ -72,7 +78,7 @@ int max_threads();
 std::string_view name(Precision p);
 std::optional<Precision> parse_precision(std::string_view s);
 
-// Rasterizes the scene with the z-buffer's (z, id) order.
+// Rasterizes the scene, triangles and lines, with the z-buffer's (z, id) order.
 Framebuffer render(const Scene& scene, const Options& options = {});
 
 // The same, into `target`: every sample of it is overwritten, and its storage is kept when its viewport
@@ -142,7 +148,9 @@ std::vector<std::size_t> bresenham(const Segment& s, Viewport vp, int bits = 8);
 // The same rule by the digital differential analyzer in float32 or float64: the ends rounded to that
 // type, the candidate across each column (or row) found by adding the slope once a step, the ends'
 // diamonds decided in that type. Rounding can move a pixel off the reference's; rast bench counts how
-// often. Any finite coordinate is accepted (past float range, float32 lights what its infinities give).
+// often. Any finite coordinate is accepted, but where the ends' difference overflows the type (past
+// float range in float32, past about 2^1023 in float64) the slope is infinite or NaN and the DDA lights
+// what that gives: it can move a whole line, or lose it.
 // Throws std::invalid_argument for a viewport outside the limits above, a coordinate that is not finite,
 // or a fixed-point precision (bresenham is that line).
 std::vector<std::size_t> dda(const Segment& s, Viewport vp, Precision precision = Precision::float32);

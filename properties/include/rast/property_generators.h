@@ -63,8 +63,8 @@ rc::Gen<Scene> overlapping_triangles();
 // few small triangles among them, on the same planes or their own.
 rc::Gen<Scene> layered_triangles();
 
-// Lines among triangles on a few dyadic planes, ids interleaved in a random file order: ends anywhere, on
-// pixel centres (rows, columns, diagonals, knight's moves) or along a row in a plane (a plane level in
+// Lines among triangles on a few dyadic planes, ids interleaved in a random file order: ends anywhere, one
+// out at up to 2^60, on pixel centres (rows, columns, diagonals, knight's moves) or along a row in a plane (a plane level in
 // y ties with such a line at every lit centre).
 rc::Gen<Scene> lines_among_triangles();
 
