@@ -18,8 +18,11 @@ bool fixed_engines(const Engine& e) { return e.exact() && e.snap_bits().has_valu
 bool float_engines(const Engine& e) { return e.edge_error_bound_at && !e.exact(); }
 bool reference_only(const Engine& e) { return e.is_reference(); }
 bool exact_zid_engines(const Engine& e) { return e.exact() && keeps_zid(e); }
-// The plugin ABI (version 1) has no lines: rast's own exact engines draw them.
-bool line_engines(const Engine& e) { return exact_zid_engines(e) && e.kind != Engine::Kind::plugin; }
+// The plugin ABI (version 1) has no lines: rast's own engines draw them, the float modes held to their own
+// coverage and DDA.
+bool line_engines(const Engine& e) {
+    return e.kind != Engine::Kind::plugin && (exact_zid_engines(e) || (e.kind == Engine::Kind::fast && e.precision));
+}
 
 // Float modes are bound only by float_within_bound: near an edge they may classify either way, so
 // exact coverage claims (shared edges, ties, translations) are not theirs to keep.
