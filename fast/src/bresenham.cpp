@@ -11,6 +11,8 @@
 // The walk is the same in any integer type: 128-bit integers where the snapped ends lie within 2^51 grid
 // units of the origin (products of two coordinate differences then stay below 2^105), Boost's big ones
 // beyond, up to coordinates of +-DBL_MAX. Only the columns (or rows) of the viewport are walked either way.
+// Steps are `+= 1`, never `++`: Boost 1.74's cpp_int turns -(2^64 k + 1) into +2^64 k under `++`
+// (docs/verification.md), while `+= 1` is right.
 #include <rast/fast.h>
 
 #include "line_diamond.h"
