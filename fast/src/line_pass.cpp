@@ -28,21 +28,11 @@ struct Fragment {
 
 bool bounded(const Bounded& z) { return std::isfinite(z.v) && z.e < std::numeric_limits<double>::infinity(); }
 
-// What an id of the scene names: triangle `index` in Scene::triangles, or line `index` in Scene::lines.
-struct Named {
-    bool line;
-    std::size_t index;
-};
-
 class LineZBuffer {
 public:
     LineZBuffer(const Scene& scene, const Context& c, const std::vector<std::int32_t>& ids, Framebuffer& fb)
-        : scene_(scene), c_(c), fb_(fb), named_(id_count(scene)) {
-        for (std::size_t k = 0; k < ids.size(); ++k) named_[static_cast<std::size_t>(ids[k])] = {false, k};
-        for (std::size_t k = 0; k < scene.lines.size(); ++k) {
-            named_[static_cast<std::size_t>(scene.lines[k].id)] = {true, k};
-            lines_.push_back(snapped(scene.lines[k].segment));
-        }
+        : scene_(scene), c_(c), fb_(fb), named_(primitives_by_id(scene, ids)) {
+        for (const Line& line : scene.lines) lines_.push_back(snapped(line.segment));
     }
 
     void draw(std::size_t k) {
@@ -80,7 +70,7 @@ private:
     }
 
     Fragment stored_fragment(std::int32_t stored, int i, int j, int s) {
-        const Named named = named_[static_cast<std::size_t>(stored)];
+        const Primitive named = named_[static_cast<std::size_t>(stored)];
         if (named.line) {
             const Segment& other = lines_[named.index];
             const double cx = i + 0.5, cy = j + 0.5;
@@ -117,7 +107,7 @@ private:
     const Scene& scene_;
     const Context& c_;
     Framebuffer& fb_;
-    std::vector<Named> named_;
+    std::vector<Primitive> named_;
     std::vector<Segment> lines_;  // as the mode sees them: snapped in the fixed modes
     std::unordered_map<std::size_t, Placed> placed_;
     std::unordered_map<std::size_t, Plane> planes_;

@@ -17,21 +17,9 @@
 
 namespace rast::reference::detail {
 
-namespace {
-
-// What an id of the scene names: triangle `index` in Scene::triangles, or line `index` in Scene::lines.
-struct Named {
-    bool line;
-    std::size_t index;
-};
-
-}  // namespace
-
 void draw_lines(const Scene& scene, const std::vector<std::int32_t>& ids, Framebuffer& fb) {
     rename_triangles(fb, ids);
-    std::vector<Named> named(id_count(scene));
-    for (std::size_t k = 0; k < ids.size(); ++k) named[static_cast<std::size_t>(ids[k])] = {false, k};
-    for (std::size_t k = 0; k < scene.lines.size(); ++k) named[static_cast<std::size_t>(scene.lines[k].id)] = {true, k};
+    const std::vector<Primitive> named = primitives_by_id(scene, ids);
     std::unordered_map<std::size_t, ExactDepth> planes;  // the stored triangles an exact comparison needed
 
     const auto pattern = sample_pattern(fb.samples);
@@ -47,7 +35,7 @@ void draw_lines(const Scene& scene, const std::vector<std::int32_t>& ids, Frameb
                 if (stored != Framebuffer::kNoTriangle) {
                     if (rounded > fb.depth[at]) continue;
                     if (rounded == fb.depth[at]) {
-                        const Named other = named[static_cast<std::size_t>(stored)];
+                        const Primitive other = named[static_cast<std::size_t>(stored)];
                         const Rational other_z = [&] {
                             if (other.line) return line_depth(scene.lines[other.index].segment, i, j);
                             auto plane = planes.find(other.index);

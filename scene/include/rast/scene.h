@@ -120,6 +120,20 @@ inline std::vector<std::int32_t> triangle_ids(const Scene& scene) {
     return ids;
 }
 
+// What an id names: triangle `index` of Scene::triangles, or line `index` of Scene::lines.
+struct Primitive {
+    bool line = false;
+    std::size_t index = 0;
+};
+
+// What each id of the scene names, by id; `ids` is triangle_ids(scene).
+inline std::vector<Primitive> primitives_by_id(const Scene& scene, const std::vector<std::int32_t>& ids) {
+    std::vector<Primitive> named(id_count(scene));
+    for (std::size_t k = 0; k < ids.size(); ++k) named[static_cast<std::size_t>(ids[k])] = {false, k};
+    for (std::size_t k = 0; k < scene.lines.size(); ++k) named[static_cast<std::size_t>(scene.lines[k].id)] = {true, k};
+    return named;
+}
+
 // The z-buffer's content after rendering: per sample, the id of the owning triangle or line (-1 for none) and
 // its depth (+infinity for none). Rows are stored bottom row first (j = 0), matching y up; writers of
 // images and id files flip to top row first.
