@@ -37,16 +37,22 @@ protected:
     fs::path found;
 };
 
-TEST(DropTriangles, KeepsOnlyWhatTheFailureNeeds) {
+// Six triangles told apart by their first x, 0 .. 5.
+Scene six_triangles() {
     Scene s{{4, 4}, 1, {}};
     for (int k = 0; k < 6; ++k) s.triangles.push_back(Triangle{{Vertex{double(k), 0, 0}, Vertex{1, 0, 0}, Vertex{0, 1, 0}}});
-    // Fails while triangles 1 and 4 are both there.
-    const auto fails = [](const Scene& scene) {
-        int seen = 0;
-        for (const Triangle& t : scene.triangles) seen += t.v[0].x == 1 || t.v[0].x == 4;
-        return seen == 2;
-    };
-    const Scene shrunk = drop_triangles(s, fails);
+    return s;
+}
+
+// Fails while triangles 1 and 4 are both there.
+bool has_1_and_4(const Scene& scene) {
+    int seen = 0;
+    for (const Triangle& t : scene.triangles) seen += t.v[0].x == 1 || t.v[0].x == 4;
+    return seen == 2;
+}
+
+TEST(DropTriangles, KeepsOnlyWhatTheFailureNeeds) {
+    const Scene shrunk = drop_triangles(six_triangles(), has_1_and_4);
     ASSERT_EQ(shrunk.triangles.size(), 2u);
     EXPECT_EQ(shrunk.triangles[0].v[0].x, 1);
     EXPECT_EQ(shrunk.triangles[1].v[0].x, 4);
@@ -56,15 +62,9 @@ TEST(DropTriangles, KeepsOnlyWhatTheFailureNeeds) {
 // 8). With triangles 1 and 4 (ids 2 and 6) kept, the file reads line, triangle 1, line, triangle 4, line:
 // the lines are ids 0, 2 and 4, the triangles 1 and 3.
 TEST(DropTriangles, RenumbersTheLinesAfterWhatItDrops) {
-    Scene s{{4, 4}, 1, {}};
-    for (int k = 0; k < 6; ++k) s.triangles.push_back(Triangle{{Vertex{double(k), 0, 0}, Vertex{1, 0, 0}, Vertex{0, 1, 0}}});
+    Scene s = six_triangles();
     s.lines = {{Segment{}, 0}, {Segment{}, 3}, {Segment{}, 7}};
-    const auto fails = [](const Scene& scene) {
-        int seen = 0;
-        for (const Triangle& t : scene.triangles) seen += t.v[0].x == 1 || t.v[0].x == 4;
-        return seen == 2;
-    };
-    const Scene shrunk = drop_triangles(s, fails);
+    const Scene shrunk = drop_triangles(s, has_1_and_4);
     ASSERT_EQ(shrunk.triangles.size(), 2u);
     ASSERT_EQ(shrunk.lines.size(), 3u);
     EXPECT_EQ(shrunk.lines[0].id, 0);

@@ -4,6 +4,8 @@
 // arithmetic settles, and bad lines refused before the framebuffer is touched.
 #include <rast/fast.h>
 
+#include <rast/testing/line_scenes.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -17,19 +19,9 @@ namespace {
 constexpr Precision kAll[] = {Precision::fixed4, Precision::fixed8, Precision::fixed16, Precision::float32,
                               Precision::float64};
 
-Segment segment(Vertex a, Vertex b) { return {{a, b}}; }
-
-// A triangle covering the whole of a small viewport, of depth z = a x + b y + c.
-Triangle backdrop(double a, double b, double c) {
-    const auto at = [&](double x, double y) { return Vertex{x, y, a * x + b * y + c}; };
-    return {{at(-8, -8), at(24, -8), at(-8, 24)}};
-}
-
-std::vector<std::int32_t> row(const Framebuffer& fb, int j) {
-    std::vector<std::int32_t> ids;
-    for (int i = 0; i < fb.viewport.width; ++i) ids.push_back(fb.id(i, j));
-    return ids;
-}
+using rast::testing::backdrop;
+using rast::testing::row;
+using rast::testing::segment;
 
 TEST(LineZBuffer, NearerWinsAgainstATriangle) {
     for (const Precision p : kAll) {

@@ -3,6 +3,8 @@
 #include <rast/line.h>
 #include <rast/reference.h>
 
+#include <rast/testing/line_scenes.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -13,20 +15,9 @@
 namespace rast::reference {
 namespace {
 
-Segment segment(Vertex a, Vertex b) { return {{a, b}}; }
-
-// A triangle covering the whole of a small viewport, of depth z = a x + b y + c.
-Triangle backdrop(double a, double b, double c) {
-    const auto at = [&](double x, double y) { return Vertex{x, y, a * x + b * y + c}; };
-    return {{at(-8, -8), at(24, -8), at(-8, 24)}};
-}
-
-// The ids of row j, one per pixel (sample 0).
-std::vector<std::int32_t> row(const Framebuffer& fb, int j) {
-    std::vector<std::int32_t> ids;
-    for (int i = 0; i < fb.viewport.width; ++i) ids.push_back(fb.id(i, j));
-    return ids;
-}
+using rast::testing::backdrop;
+using rast::testing::row;
+using rast::testing::segment;
 
 TEST(LineDepth, IsZAtThePointNearestTheCentre) {
     // Along a row: the centre's own x. (2.5 - 0.5) / 4 of the way from 0 to 1.
