@@ -85,11 +85,11 @@ private:
     }
 
     // Triangle k as the engine placed it (snapped, counter-clockwise) and its plane, made once. A stored
-    // triangle covered a sample, so it was placed.
+    // triangle covered a sample, so it was placed (value() throws rather than read nothing if not).
     const Placed& placed(std::size_t k) {
         auto found = placed_.find(k);
         if (found == placed_.end()) {
-            found = placed_.emplace(k, *place<Fault::none>(scene_.triangles[k], c_)).first;
+            found = placed_.emplace(k, place<Fault::none>(scene_.triangles[k], c_).value()).first;
             planes_.emplace(k, make_plane(found->second, c_));
         }
         return found->second;
