@@ -32,7 +32,7 @@ class LineZBuffer {
 public:
     LineZBuffer(const Scene& scene, const Context& c, const std::vector<std::int32_t>& ids, Framebuffer& fb)
         : scene_(scene), c_(c), fb_(fb), named_(primitives_by_id(scene, ids)) {
-        for (const Line& line : scene.lines) lines_.push_back(snapped(line.segment));
+        for (const Line& line : scene.lines) lines_.push_back(snapped(line.segment, c_.precision));
     }
 
     void draw(std::size_t k) {
@@ -45,12 +45,14 @@ public:
             const int i = static_cast<int>(pixel % width), j = static_cast<int>(pixel / width);
             const double cx = i + 0.5, cy = j + 0.5;
             const Fragment line{line_depth(segment, cx, cy), DepthAt{nullptr, &segment, cx, cy}};
+            // The depth stored, once for the pixel's samples (exactly rounded where the bound says nothing).
+            const double written = bounded(line.z) ? line.z.v : nearest(line.exact);
             for (int s = 0; s < fb_.samples; ++s) {
                 const std::size_t at = fb_.index(i, j, s);
                 const std::int32_t stored = fb_.ids[at];
                 if (stored != Framebuffer::kNoTriangle && !in_front(line, id, stored, i, j, s)) continue;
                 fb_.ids[at] = id;
-                fb_.depth[at] = bounded(line.z) ? line.z.v : nearest(line.exact);
+                fb_.depth[at] = written;
             }
         }
     }
@@ -93,15 +95,6 @@ private:
             planes_.emplace(k, make_plane(found->second, c_));
         }
         return found->second;
-    }
-
-    Segment snapped(Segment s) const {
-        if (is_fixed(c_.precision))
-            for (Vertex& v : s.v) {
-                v.x = snap_coordinate(v.x, c_.bits);
-                v.y = snap_coordinate(v.y, c_.bits);
-            }
-        return s;
     }
 
     const Scene& scene_;

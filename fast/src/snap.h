@@ -42,16 +42,17 @@ inline std::int64_t grid_units(double x, double scale) {
     return static_cast<std::int64_t>((x * scale + 0x1.8p52) - 0x1.8p52);
 }
 
-// rast::fast::snap without its input checks: the engine snaps triangles it has already checked.
-inline Triangle snapped(const Triangle& t, Precision precision) {
+// rast::fast::snap without its input checks: the engine snaps triangles and lines it has already
+// checked (the identity in the float modes).
+template <class Shape>
+Shape snapped(Shape shape, Precision precision) {
     const int bits = subpixel_bits(precision);
-    if (bits == 0) return t;
-    Triangle s = t;
-    for (Vertex& v : s.v) {
+    if (bits == 0) return shape;
+    for (Vertex& v : shape.v) {
         v.x = snap_coordinate(v.x, bits);
         v.y = snap_coordinate(v.y, bits);
     }
-    return s;
+    return shape;
 }
 
 }  // namespace rast::fast::detail

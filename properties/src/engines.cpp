@@ -13,11 +13,7 @@ Scene rasterized_geometry(const Engine& engine, const Scene& scene) {
     for (Triangle& t : geometry.triangles) t = rasterized_geometry(engine, t);
     const auto& contract = engine.contract;
     if (contract && contract->snap)
-        for (Line& line : geometry.lines)
-            for (Vertex& v : line.segment.v) {
-                v.x = snap(v.x, *contract->snap, contract->rounding);
-                v.y = snap(v.y, *contract->snap, contract->rounding);
-            }
+        for (Line& line : geometry.lines) line.segment = snap(line.segment, *contract->snap, contract->rounding);
     return geometry;
 }
 

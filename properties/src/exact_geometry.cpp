@@ -83,13 +83,21 @@ double snap(double value, int bits, Contract::Rounding rounding) {
     return std::ldexp(rounding == Contract::Rounding::floor ? std::floor(scaled) : std::nearbyint(scaled), -bits);
 }
 
-Triangle snap(const Triangle& t, int bits, Contract::Rounding rounding) {
-    Triangle s = t;
-    for (Vertex& v : s.v) {
+namespace {
+
+template <class Shape>
+Shape snap_vertices(Shape shape, int bits, Contract::Rounding rounding) {
+    for (Vertex& v : shape.v) {
         v.x = snap(v.x, bits, rounding);
         v.y = snap(v.y, bits, rounding);
     }
-    return s;
+    return shape;
 }
+
+}  // namespace
+
+Triangle snap(const Triangle& t, int bits, Contract::Rounding rounding) { return snap_vertices(t, bits, rounding); }
+
+Segment snap(const Segment& s, int bits, Contract::Rounding rounding) { return snap_vertices(s, bits, rounding); }
 
 }  // namespace rast::properties

@@ -62,11 +62,6 @@ Segment reversed(Segment s) {
     return s;
 }
 
-Segment snapped(Segment s, int bits) {
-    for (Vertex& v : s.v) v = {rast::properties::snap(v.x, bits), rast::properties::snap(v.y, bits), v.z};
-    return s;
-}
-
 std::size_t index(Viewport vp, std::pair<int, int> p) {
     return static_cast<std::size_t>(p.second) * static_cast<std::size_t>(vp.width) + static_cast<std::size_t>(p.first);
 }
@@ -78,7 +73,7 @@ bool in_viewport(Viewport vp, std::optional<std::pair<int, int>> p) {
 RC_GTEST_PROP(Lines, BresenhamEqualsTheReferenceOnSnappedEnds, ()) {
     const auto [vp, s] = *cases();
     const int bits = *rc::gen::element(4, 8, 16);
-    RC_ASSERT(rast::fast::bresenham(s, vp, bits) == rast::reference::lit_pixels(snapped(s, bits), vp));
+    RC_ASSERT(rast::fast::bresenham(s, vp, bits) == rast::reference::lit_pixels(rast::properties::snap(s, bits), vp));
 }
 
 // Travelling the other way changes only the pixels whose diamonds hold an end.

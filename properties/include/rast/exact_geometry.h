@@ -41,5 +41,6 @@ Rational twice_area(const Triangle& t);
 // snapping, and throws std::invalid_argument.
 double snap(double value, int bits, Contract::Rounding rounding = Contract::Rounding::nearest_even);
 Triangle snap(const Triangle& t, int bits, Contract::Rounding rounding = Contract::Rounding::nearest_even);
+Segment snap(const Segment& s, int bits, Contract::Rounding rounding = Contract::Rounding::nearest_even);
 
 }  // namespace rast::properties
