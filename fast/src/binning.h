@@ -2,11 +2,14 @@
 // where it is big, and appended to the bins of the screen tiles its bounding box reaches, in id order.
 #pragma once
 
+#include "place_batch.h"
 #include "setup.h"
 #include "validate.h"
 
 #include <rast/fast_faults.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -50,6 +53,29 @@ void append(std::vector<Record>& bin, const Record& record) {
     __builtin_prefetch(reinterpret_cast<const void*>(next_end), 1);
 }
 
+// What place_small_batch needs of the context.
+inline PlaceGrid place_grid(const Context& c) {
+    return {double(std::int64_t{1} << c.bits), c.unit, c.coordinate_limit,
+            double(c.sx_min), double(c.sx_max), double(c.sy_min), double(c.sy_max),
+            double(c.vp.width), double(c.vp.height)};
+}
+
+// Lane k of a batch (place_batch.h) as place_small_fixed would have filled its record.
+inline SmallFixed small_fixed_of(const PlacedBatch& b, int k, std::int32_t id) {
+    SmallFixed s;
+    for (int corner = 0; corner < 3; ++corner) {
+        s.z[corner] = b.z[corner][k];
+        s.x[corner] = b.x[corner][k];
+        s.y[corner] = b.y[corner][k];
+    }
+    s.i_lo = b.i_lo[k];
+    s.i_hi = b.i_hi[k];
+    s.j_lo = b.j_lo[k];
+    s.j_hi = b.j_hi[k];
+    s.id = id;
+    return s;
+}
+
 template <Fault F>
 void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
                std::size_t tiles) {
@@ -72,11 +98,15 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     }
     // Pixel indices inside the viewport are not negative: unsigned division is a shift.
     const auto tile_of = [](int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); };
-    for (std::size_t id = begin; id != end; ++id) {
+    const auto bin_small = [&](const SmallFixed& record) {
+        for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
+            for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
+                append(chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx], record);
+    };
+    // Triangle id, placed in `lane` (and `record` where it is small_fixed), into the bins; false where a
+    // coordinate is not finite, which stops the binning.
+    const auto bin = [&](std::size_t id, Lane lane, const SmallFixed& record) {
         const Triangle& triangle = scene.triangles[id];
-        SmallFixed record;
-        const Lane lane = lean ? place_small_fixed<F>(triangle, static_cast<std::int32_t>(id), scene.c, record)
-                               : Lane::general;
         // Checked here rather than in a pass of its own: the triangles are read once. The small lane
         // only takes corners whose x and y are within the fixed range, hence finite.
         const bool finite = lane == Lane::general ? is_finite(triangle)
@@ -84,17 +114,15 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
                                                         std::isfinite(triangle.v[2].z);
         if (!finite) {
             chunk.non_finite = id;
-            return;
+            return false;
         }
-        if (lane == Lane::culled) continue;
+        if (lane == Lane::culled) return true;
         if (lane == Lane::small_fixed) {
-            for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
-                for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
-                    append(chunk.fixed_bins[static_cast<std::size_t>(ty) * tiles_x + tx], record);
-            continue;
+            bin_small(record);
+            return true;
         }
         const std::optional<Placed> placed = place<F>(triangle, scene.c);
-        if (!placed) continue;
+        if (!placed) return true;
         const bool small = is_small(*placed);
         if (!small) chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
         for (int ty = tile_of(placed->j_lo); ty <= tile_of(placed->j_hi); ++ty)
@@ -103,6 +131,40 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
                 if (small) append(chunk.small_bins[tile], {*placed, static_cast<std::int32_t>(id)});
                 else append(chunk.big_bins[tile], {static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)});
             }
+        return true;
+    };
+    // The library places kPlaceBatch triangles at a time; the injected faults reach place_small_fixed's
+    // own steps, so the faulty twins place one at a time. Each bin stays in id order: a batch's small
+    // triangles go to the fixed bins, then its others, in order, to theirs; the first bad triangle of the
+    // chunk is the first general one that is (the small and culled lanes are finite).
+    if (lean && F == Fault::none) {
+        const PlaceGrid grid = place_grid(scene.c);
+        PlacedBatch batch;
+        for (std::size_t id = begin; id != end;) {
+            const int n = static_cast<int>(std::min<std::size_t>(kPlaceBatch, end - id));
+            place_small_batch(&scene.triangles[id], n, grid, batch);
+            for (std::uint32_t lanes = batch.small; lanes != 0; lanes &= lanes - 1) {
+                const int k = std::countr_zero(lanes);
+                bin_small(small_fixed_of(batch, k, static_cast<std::int32_t>(id + k)));
+            }
+            for (std::uint32_t lanes = batch.general | batch.undecided; lanes != 0; lanes &= lanes - 1) {
+                const int k = std::countr_zero(lanes);
+                SmallFixed record;
+                const Lane lane = batch.undecided >> k & 1
+                                      ? place_small_fixed<F>(scene.triangles[id + k], static_cast<std::int32_t>(id + k),
+                                                             scene.c, record)
+                                      : Lane::general;
+                if (!bin(id + k, lane, record)) return;
+            }
+            id += static_cast<std::size_t>(n);
+        }
+        return;
+    }
+    for (std::size_t id = begin; id != end; ++id) {
+        SmallFixed record;
+        const Lane lane = lean ? place_small_fixed<F>(scene.triangles[id], static_cast<std::int32_t>(id), scene.c, record)
+                               : Lane::general;
+        if (!bin(id, lane, record)) return;
     }
 }
 

@@ -1,0 +1,125 @@
+// Highway compiles this file once per SIMD target (foreach_target) and dispatches to the best one the
+// CPU supports at run time.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "place_batch.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "place_batch.h"
+
+#include <algorithm>
+#include <cstring>
+
+HWY_BEFORE_NAMESPACE();
+namespace rast::fast::detail::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using D = hn::CappedTag<double, kPlaceBatch>;
+using DI = hn::RebindToSigned<D>;
+using DI32 = hn::Rebind<std::int32_t, D>;
+using V = hn::Vec<D>;
+
+// A triangle is nine doubles: corner k's x, y, z at 3k, 3k + 1, 3k + 2.
+static_assert(sizeof(Triangle) == 9 * sizeof(double));
+
+template <class Mask>
+std::uint32_t bits_of(Mask m, int first) {
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(D(), m, bytes);
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof bits);
+    return bits << first;
+}
+
+// place_small_fixed's steps, in its terms (setup.h), for every lane at once.
+void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& out) {
+    const D d;
+    const DI di;
+    const DI32 di32;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    out.small = out.culled = out.general = out.undecided = 0;
+    const V scale = hn::Set(d, g.scale), unit = hn::Set(d, g.unit), limit = hn::Set(d, g.limit);
+    const V round = hn::Set(d, 0x1.8p52), minus_one = hn::Set(d, -1), zero = hn::Zero(d);
+    for (int first = 0; first < n; first += lanes) {
+        const int count = std::min(lanes, n - first);
+        // Lanes past the batch read its last triangle again, and are in no mask.
+        const auto lane = hn::Min(hn::Iota(di, 0), hn::Set(di, count - 1));
+        const auto index = hn::Add(hn::ShiftLeft<3>(lane), lane);  // 9 doubles a triangle
+        const double* base = &t[first].v[0].x;
+        V x[3], y[3], z[3];
+        auto in_range = hn::FirstN(d, static_cast<std::size_t>(count));
+        for (int k = 0; k < 3; ++k) {
+            const V px = hn::GatherIndex(d, base + 3 * k, index), py = hn::GatherIndex(d, base + 3 * k + 1, index);
+            z[k] = hn::GatherIndex(d, base + 3 * k + 2, index);
+            // Within the range (false for NaN); grid_units (snap.h): the sum rounds to an integer.
+            in_range = hn::And(in_range, hn::And(hn::Le(hn::Abs(px), limit), hn::Le(hn::Abs(py), limit)));
+            x[k] = hn::Sub(hn::Add(hn::Mul(px, scale), round), round);
+            y[k] = hn::Sub(hn::Add(hn::Mul(py, scale), round), round);
+        }
+        // The cross product: its products exact below 2^53, and then their difference's sign and zero too.
+        const V dx1 = hn::Sub(x[1], x[0]), dy1 = hn::Sub(y[1], y[0]);
+        const V dx2 = hn::Sub(x[2], x[0]), dy2 = hn::Sub(y[2], y[0]);
+        const V p = hn::Mul(dx1, dy2), q = hn::Mul(dy1, dx2);
+        const auto exact = hn::Lt(hn::Max(hn::Abs(p), hn::Abs(q)), hn::Set(d, 0x1p53));
+        const V cross = hn::Sub(p, q);
+        // pixel_range in fixed units: floor division by 2^bits, exact; then clamped and clipped.
+        const auto range = [&](V lo, V hi, double o_min, double o_max, double size, V& from, V& to) {
+            const V top = hn::Set(d, size);
+            from = hn::Neg(hn::Floor(hn::Mul(hn::Sub(hn::Set(d, o_max), lo), unit)));
+            to = hn::Floor(hn::Mul(hn::Sub(hi, hn::Set(d, o_min)), unit));
+            from = hn::Max(hn::Min(hn::Max(from, minus_one), top), zero);
+            to = hn::Min(hn::Min(hn::Max(to, minus_one), top), hn::Sub(top, hn::Set(d, 1)));
+            return hn::Le(from, to);
+        };
+        V i_lo, i_hi, j_lo, j_hi;
+        const auto on_x = range(hn::Min(hn::Min(x[0], x[1]), x[2]), hn::Max(hn::Max(x[0], x[1]), x[2]), g.sx_min,
+                                g.sx_max, g.width, i_lo, i_hi);
+        const auto on_y = range(hn::Min(hn::Min(y[0], y[1]), y[2]), hn::Max(hn::Max(y[0], y[1]), y[2]), g.sy_min,
+                                g.sy_max, g.height, j_lo, j_hi);
+        const V side = hn::Set(d, 32);  // kSmallSide
+        const auto small_box = hn::And(hn::Lt(hn::Sub(i_hi, i_lo), side), hn::Lt(hn::Sub(j_hi, j_lo), side));
+        // Out of range: general; zero area or no pixel: culled; a box too big: general. A depth that is not
+        // finite makes the lane general too, where the caller's check of every coordinate finds it.
+        const auto finite = hn::And(hn::And(hn::IsFinite(z[0]), hn::IsFinite(z[1])), hn::IsFinite(z[2]));
+        const auto decided = hn::And(hn::And(in_range, exact), finite);
+        const auto culled = hn::And(decided, hn::Or(hn::Eq(cross, zero), hn::Not(hn::And(on_x, on_y))));
+        const auto small = hn::AndNot(culled, hn::And(decided, small_box));
+        const auto first_n = hn::FirstN(d, static_cast<std::size_t>(count));
+        out.general |= bits_of(hn::AndNot(hn::And(in_range, finite), first_n), first);
+        out.undecided |= bits_of(hn::AndNot(exact, hn::And(in_range, finite)), first);
+        out.culled |= bits_of(culled, first);
+        out.general |= bits_of(hn::AndNot(small, hn::AndNot(culled, decided)), first);
+        out.small |= bits_of(small, first);
+        // Counter-clockwise: a clockwise triangle's corners 1 and 2 trade places.
+        const auto clockwise = hn::Lt(cross, zero);
+        const auto corner = [&](const V* c, int k) { return k == 0 ? c[0] : hn::IfThenElse(clockwise, c[3 - k], c[k]); };
+        // Only the small lanes are read; the others are zero, which converts.
+        const auto store_int = [&](V v, std::int32_t* to) {
+            hn::StoreU(hn::DemoteTo(di32, hn::IfThenElseZero(small, v)), di32, to + first);
+        };
+        for (int k = 0; k < 3; ++k) {
+            store_int(corner(x, k), out.x[k]);
+            store_int(corner(y, k), out.y[k]);
+            hn::StoreU(corner(z, k), d, out.z[k] + first);
+        }
+        store_int(i_lo, out.i_lo);
+        store_int(i_hi, out.i_hi);
+        store_int(j_lo, out.j_lo);
+        store_int(j_hi, out.j_hi);
+    }
+}
+
+}  // namespace rast::fast::detail::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace rast::fast::detail {
+
+HWY_EXPORT(PlaceSmallBatch);
+
+void place_small_batch(const Triangle* t, int n, const PlaceGrid& grid, PlacedBatch& out) {
+    HWY_DYNAMIC_DISPATCH(PlaceSmallBatch)(t, n, grid, out);
+}
+
+}  // namespace rast::fast::detail
+#endif  // HWY_ONCE

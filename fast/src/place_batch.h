@@ -1,0 +1,41 @@
+// Placing small fixed-point triangles several at a time in SIMD (runtime dispatch, as kernels.h):
+// place_small_fixed (setup.h) one triangle at a time took a fifth of the instructions of a scene of
+// 4-pixel triangles, most of them in its branches and in moving coordinates between integer and
+// floating-point registers. Here every lane is a triangle and every step is exact: grid units, their
+// differences and the pixel ranges are integers below 2^31 held in doubles, scaled by powers of two.
+#pragma once
+
+#include <rast/scene.h>
+
+#include <cstdint>
+
+namespace rast::fast::detail {
+
+inline constexpr int kPlaceBatch = 8;
+
+// What the placing needs of the Context (setup.h), in doubles: the grid's scale 2^bits and spacing
+// 2^-bits, coordinate_limit, the sample offsets' extent in grid units and the viewport's size.
+struct PlaceGrid {
+    double scale, unit, limit;
+    double sx_min, sx_max, sy_min, sy_max;
+    double width, height;
+};
+
+// kPlaceBatch triangles placed, one array per field, each lane what place_small_fixed<Fault::none> makes
+// of its triangle: the lane's bit in exactly one of the four masks, and where it is in `small`, the
+// fields of its SmallFixed but the id (its corners counter-clockwise in grid units, their depths, its
+// pixel bounding box). The small and culled lanes' coordinates are finite; a triangle with a depth that
+// is not finite is general. `undecided`: the lanes whose coordinate differences make products of 2^53 or
+// more (far ends of a triangle clipped to a small box), whose orientation doubles cannot decide
+// exactly; place_small_fixed decides them.
+struct PlacedBatch {
+    double z[3][kPlaceBatch];
+    std::int32_t x[3][kPlaceBatch], y[3][kPlaceBatch];
+    std::int32_t i_lo[kPlaceBatch], i_hi[kPlaceBatch], j_lo[kPlaceBatch], j_hi[kPlaceBatch];
+    std::uint32_t small, culled, general, undecided;
+};
+
+// Triangles t[0, n), 1 <= n <= kPlaceBatch, into lanes 0 to n - 1 (the lanes past n are in no mask).
+void place_small_batch(const Triangle* t, int n, const PlaceGrid& grid, PlacedBatch& out);
+
+}  // namespace rast::fast::detail

@@ -1,0 +1,165 @@
+// place_small_batch (place_batch.h) against place_small_fixed (setup.h), the one-triangle definition, lane
+// by lane on every SIMD target: the same verdict (small, culled or general; general for a depth that is
+// not finite) and, for a small triangle, the same record, for every fixed mode and sample count, on triangles chosen where the steps can go wrong:
+// corners on and off the grid's ties, clockwise and counter-clockwise, zero area, boxes of 31, 32 and 33
+// pixels, boxes clipped by the viewport and outside it, coordinates at and past the fixed range, NaN and
+// infinity, corners so far apart that the cross product's terms pass 2^53 (undecided lanes), and
+// slivers whose cross product is +-1 between terms near 2^58.
+#include "binning.h"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace rast::fast::detail {
+namespace {
+
+Vertex random_vertex(std::mt19937_64& rng, const Context& c, double cx, double cy, double reach) {
+    std::uniform_real_distribution<double> offset(-reach, reach), depth(-1, 1);
+    std::uniform_int_distribution<int> kind(0, 19);
+    const auto coordinate = [&](double centre) {
+        const double v = centre + offset(rng);
+        switch (kind(rng)) {
+            case 0: return std::round(v / c.unit) * c.unit + c.unit / 2;  // a tie of the grid's rounding
+            case 1: return std::round(v);                                // on a pixel corner
+            case 2: return c.coordinate_limit * (offset(rng) < 0 ? -1 : 1);  // the range's end
+            case 3: return std::nextafter(c.coordinate_limit, 1e300);        // just past it
+            case 4: return offset(rng) < 0 ? -0.0 : 0.0;
+            default: return v;
+        }
+    };
+    return {coordinate(cx), coordinate(cy), depth(rng)};
+}
+
+// A triangle with one corner near the viewport's far corner (a small box there) and two far out, chosen
+// so that its cross product is +-1 in grid units while its two products are near 2^56: doubles round
+// those products, and only their exactness bound sends such a lane to place_small_fixed.
+Triangle sliver(std::mt19937_64& rng, const Context& c) {
+    std::uniform_int_distribution<std::int64_t> big(std::int64_t{1} << 27, std::int64_t{1} << 28);
+    std::int64_t a = big(rng), b = big(rng);
+    // Extended Euclid: u a + v b = gcd(a, b); made coprime by dividing it out.
+    std::int64_t r0 = a, r1 = b, u0 = 1, u1 = 0, v0 = 0, v1 = 1;
+    while (r1 != 0) {
+        const std::int64_t q = r0 / r1;
+        std::tie(r0, r1) = std::make_tuple(r1, r0 - q * r1);
+        std::tie(u0, u1) = std::make_tuple(u1, u0 - q * u1);
+        std::tie(v0, v1) = std::make_tuple(v1, v0 - q * v1);
+    }
+    a /= r0;
+    b /= r0;
+    // a u0 + b v0 = 1: the corners (a, b) and (a - v0, b + u0) have a (b + u0) - b (a - v0) = 1.
+    const double x0 = 1020, y0 = 1020, scale = 1 / c.unit;
+    const auto at = [&](std::int64_t dx, std::int64_t dy) {
+        return Vertex{x0 + static_cast<double>(dx) / scale, y0 + static_cast<double>(dy) / scale, 0.25};
+    };
+    Triangle t{{at(0, 0), at(a, b), at(a - v0, b + u0)}};
+    if (rng() % 2) std::swap(t.v[1], t.v[2]);
+    return t;
+}
+
+Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
+    std::uniform_real_distribution<double> where(-40, 1064);
+    std::uniform_int_distribution<int> shape(0, 10);
+    const double cx = where(rng), cy = where(rng);
+    Triangle t;
+    switch (shape(rng)) {
+        case 0:  // far apart: products past 2^53 in the coarse modes too
+            for (Vertex& v : t.v) v = random_vertex(rng, c, cx, cy, c.coordinate_limit);
+            break;
+        case 1:  // zero area: a point repeated, or three on a line
+            t.v[0] = random_vertex(rng, c, cx, cy, 8);
+            t.v[1] = random_vertex(rng, c, cx, cy, 8);
+            t.v[2] = shape(rng) < 5 ? t.v[0] : Vertex{2 * t.v[1].x - t.v[0].x, 2 * t.v[1].y - t.v[0].y, 0.5};
+            break;
+        case 2:  // boxes about 32 pixels across, either side of the small lane's limit
+            for (Vertex& v : t.v) v = random_vertex(rng, c, cx, cy, 16.5);
+            break;
+        case 3: {  // not finite
+            for (Vertex& v : t.v) v = random_vertex(rng, c, cx, cy, 4);
+            const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity()};
+            double* field = &t.v[shape(rng) % 3].x + shape(rng) % 3;
+            *field = bad[shape(rng) % 3];
+            break;
+        }
+        case 4:
+            return sliver(rng, c);
+        default:  // tiny to small
+            for (Vertex& v : t.v) v = random_vertex(rng, c, cx, cy, shape(rng) < 7 ? 3 : 12);
+            break;
+    }
+    return t;
+}
+
+void expect_same_record(const SmallFixed& got, const SmallFixed& want, const std::string& what) {
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(got.x[k], want.x[k]) << what;
+        EXPECT_EQ(got.y[k], want.y[k]) << what;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(got.z[k]), std::bit_cast<std::uint64_t>(want.z[k])) << what;
+    }
+    EXPECT_EQ(got.i_lo, want.i_lo) << what;
+    EXPECT_EQ(got.i_hi, want.i_hi) << what;
+    EXPECT_EQ(got.j_lo, want.j_lo) << what;
+    EXPECT_EQ(got.j_hi, want.j_hi) << what;
+    EXPECT_EQ(got.id, want.id) << what;
+}
+
+TEST(PlaceBatch, EqualsPlaceSmallFixedOnEveryTarget) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        std::mt19937_64 rng(20261127);
+        int verdicts[4] = {};  // small, culled, general, undecided
+        for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+            for (const int samples : {1, 4, 16}) {
+                const Context c = make_context<Fault::none>({1024, 1024}, samples, precision);
+                const PlaceGrid grid = place_grid(c);
+                for (int trial = 0; trial < 3000; ++trial) {
+                    std::vector<Triangle> batch(1 + trial % kPlaceBatch);
+                    for (Triangle& t : batch) t = random_triangle(rng, c);
+                    const int n = static_cast<int>(batch.size());
+                    PlacedBatch got;
+                    place_small_batch(batch.data(), n, grid, got);
+                    EXPECT_EQ(got.small & got.culled, 0u);
+                    EXPECT_EQ((got.small | got.culled) & (got.general | got.undecided), 0u);
+                    EXPECT_EQ(got.general & got.undecided, 0u);
+                    EXPECT_EQ(got.small | got.culled | got.general | got.undecided, (1u << n) - 1);
+                    for (int k = 0; k < n; ++k) {
+                        const std::uint32_t bit = 1u << k;
+                        const std::string what = "trial " + std::to_string(trial) + " lane " + std::to_string(k);
+                        SmallFixed want;
+                        Lane lane = place_small_fixed<Fault::none>(batch[k], 7, c, want);
+                        // place_small_fixed leaves depths to its caller; the batch sends a triangle with
+                        // one that is not finite to the general lane, which checks every coordinate.
+                        const bool finite_depths = std::isfinite(batch[k].v[0].z) && std::isfinite(batch[k].v[1].z) &&
+                                                   std::isfinite(batch[k].v[2].z);
+                        if (!finite_depths) lane = Lane::general;
+                        if (got.undecided & bit) {
+                            ++verdicts[3];
+                            continue;  // place_small_fixed's own to decide
+                        }
+                        EXPECT_EQ(lane == Lane::small_fixed, (got.small & bit) != 0) << what;
+                        EXPECT_EQ(lane == Lane::culled, (got.culled & bit) != 0) << what;
+                        EXPECT_EQ(lane == Lane::general, (got.general & bit) != 0) << what;
+                        ++verdicts[lane == Lane::small_fixed ? 0 : lane == Lane::culled ? 1 : 2];
+                        if (lane == Lane::small_fixed) expect_same_record(small_fixed_of(got, k, 7), want, what);
+                        if (HasFailure()) return;
+                    }
+                }
+            }
+        hwy::SetSupportedTargetsForTest(0);
+        // Every verdict is met often.
+        for (const int count : verdicts) EXPECT_GT(count, 1000) << verdicts[0] << " " << verdicts[1] << " " << verdicts[2] << " " << verdicts[3];
+    }
+}
+
+}  // namespace
+}  // namespace rast::fast::detail
