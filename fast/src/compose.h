@@ -7,6 +7,7 @@
 #include "kernels.h"
 #include "scalar.h"
 #include "setup.h"
+#include "stamp.h"
 #include "tile_buffer.h"
 
 #include <rast/fast_faults.h>
@@ -164,6 +165,38 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const Ti
                                 narrow.dy[k] = static_cast<std::int32_t>(dy[k]);
                             }
                             return depth_small(b, narrow, plane, rows, undecided);
+                        });
+}
+
+// The largest sample count (sample_pattern, rast/scene.h).
+inline constexpr int kMaxSamples = 16;
+
+// The stamps of a run of small triangles in a tile (stamp.h), for every sample index.
+struct StampMasks {
+    std::uint32_t triangles = 0;  // bit k: run[k] has stamps
+    std::uint64_t masks[kMaxSamples][kPlaneBatch];
+    void find(const PlaneBatch& batch, std::uint32_t narrow, const TileRect& rect, const Context& c) {
+        for (std::size_t s = 0; s < c.offsets.size(); ++s) {
+            const StampGrid grid{rect.i0, rect.i1, rect.j0, rect.j1, c.bits, static_cast<std::int32_t>(c.sx[s]),
+                                 static_cast<std::int32_t>(c.sy[s])};
+            triangles = stamp_masks(batch, narrow, grid, masks[s]);
+        }
+    }
+};
+
+// rasterize_small for triangle k of a run whose stamps were found: the depth test reads the mask's bits.
+template <Fault F>
+void rasterize_stamp(const SmallFixed& t, const Plane& pl, const StampMasks& stamps, std::size_t k,
+                     const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
+    const Context& c = scene.c;
+    const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
+    const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
+    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene,
+                        [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                            const std::uint64_t mask = stamps.masks[s][k];
+                            return depth_rows_scalar(
+                                b, [mask](int r) { return mask >> (kStampSide * r) & first_bits(kStampSide); }, plane, rows,
+                                undecided);
                         });
 }
 

@@ -81,10 +81,16 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
                 std::size_t n = 1;
                 while (n < kPlaneBatch && f + n < fixed.size() && fixed[f + n].id < next_other) ++n;
                 Plane planes[kPlaneBatch];
-                bool narrow[kPlaneBatch];
-                small_planes({fixed.data() + f, n}, scene.c, planes, narrow);
-                for (std::size_t k = 0; k < n; ++k)
-                    rasterize_small<F>(fixed[f + k], planes[k], narrow[k], rect, tile, scene);
+                PlaneBatch batch;
+                const std::uint32_t narrow = small_planes({fixed.data() + f, n}, scene.c, planes, batch);
+                // The narrow triangles whose block fits a stamp take their coverage from its masks; the
+                // faulty twins' bugs are in the steps stamps skip, so they take none.
+                StampMasks stamps;
+                if (F == Fault::none && narrow != 0) stamps.find(batch, narrow, rect, scene.c);
+                for (std::size_t k = 0; k < n; ++k) {
+                    if (stamps.triangles >> k & 1) rasterize_stamp<F>(fixed[f + k], planes[k], stamps, k, rect, tile, scene);
+                    else rasterize_small<F>(fixed[f + k], planes[k], narrow >> k & 1, rect, tile, scene);
+                }
                 f += n;
             }
             if (next_other == kEnd) break;

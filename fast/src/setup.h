@@ -329,17 +329,17 @@ inline Placed placed_of(const SmallFixed& s, const Context& c) {
 }
 
 // The depth planes of a run of 1 to kPlaneBatch small triangles, and which of them are narrow
-// (narrow_edges): the narrow ones' set up together (narrow_planes), the others' by make_plane.
-inline void small_planes(std::span<const SmallFixed> run, const Context& c, Plane* planes, bool* narrow) {
-    bool any = false;
-    for (std::size_t k = 0; k < run.size(); ++k) {
-        narrow[k] = narrow_edges(run[k], std::int64_t{1} << c.bits);
-        any = any || narrow[k];
-    }
-    PlaneBatch batch;
-    if (any) {
+// (narrow_edges; bit k for run[k]): the narrow ones' set up together (narrow_planes), the others' by
+// make_plane. Where any is narrow, `batch` holds the run's corners and boxes (lanes past the run repeat
+// its first triangle).
+inline std::uint32_t small_planes(std::span<const SmallFixed> run, const Context& c, Plane* planes,
+                                  PlaneBatch& batch) {
+    std::uint32_t narrow = 0;
+    for (std::size_t k = 0; k < run.size(); ++k)
+        narrow |= std::uint32_t{narrow_edges(run[k], std::int64_t{1} << c.bits)} << k;
+    if (narrow != 0) {
         for (std::size_t k = 0; k < kPlaneBatch; ++k) {
-            const SmallFixed& t = run[k < run.size() ? k : 0];  // lanes past the run repeat its first
+            const SmallFixed& t = run[k < run.size() ? k : 0];
             for (int corner = 0; corner < 3; ++corner) {
                 batch.x[corner][k] = t.x[corner];
                 batch.y[corner][k] = t.y[corner];
@@ -354,9 +354,10 @@ inline void small_planes(std::span<const SmallFixed> run, const Context& c, Plan
     }
     for (std::size_t k = 0; k < run.size(); ++k) {
         const SmallFixed& t = run[k];
-        planes[k] = narrow[k] ? Plane{t.x[0] * c.unit, t.y[0] * c.unit, t.z[0], batch.a[k], batch.b[k], batch.err[k]}
-                              : make_plane(placed_of(t, c), c);
+        planes[k] = narrow >> k & 1 ? Plane{t.x[0] * c.unit, t.y[0] * c.unit, t.z[0], batch.a[k], batch.b[k], batch.err[k]}
+                                    : make_plane(placed_of(t, c), c);
     }
+    return narrow;
 }
 
 // The float modes' tile margin: the mode's edge error bound plus that of the double evaluation the tile

@@ -149,8 +149,8 @@ TEST(PlaneBound, SmallPlanesAreSoundOnEveryTarget) {
         double largest = 0;
         for (const SmallFixed& record : records) {
             Plane plane;
-            bool narrow = false;
-            small_planes({&record, 1}, c, &plane, &narrow);
+            PlaneBatch batch;
+            small_planes({&record, 1}, c, &plane, batch);
             largest = std::max(largest, plane_ratio(plane, placed_of(record, c)));
         }
         hwy::SetSupportedTargetsForTest(0);

@@ -143,9 +143,12 @@ TEST(SmallPlanes, AreTheScalarNarrowPlanesOnEveryTarget) {
             for (std::size_t first = 0, n = 1; first < records.size(); first += n, n = n % kPlaneBatch + 1) {
                 n = std::min(n, records.size() - first);
                 Plane planes[kPlaneBatch];
+                PlaneBatch batch;
+                const std::uint32_t narrow_bits = small_planes({records.data() + first, n}, c, planes, batch);
+                ASSERT_EQ(narrow_bits >> n, 0u);
                 bool narrow[kPlaneBatch];
-                small_planes({records.data() + first, n}, c, planes, narrow);
                 for (std::size_t k = 0; k < n; ++k) {
+                    narrow[k] = narrow_bits >> k & 1;
                     const SmallFixed& record = records[first + k];
                     ASSERT_EQ(narrow[k], narrow_edges(record, std::int64_t{1} << c.bits));
                     const Placed p = placed_of(record, c);

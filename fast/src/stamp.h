@@ -1,0 +1,33 @@
+// Stamps: the coverage of a batch of small triangles' blocks, each at most kStampSide samples each way,
+// as one 64-bit mask per triangle and sample index (SIMD with runtime dispatch, as kernels.h). A tiny
+// triangle's edge functions, set up one at a time and stepped sample by sample in scalar code, took
+// half of its composing; here the setup runs across the batch's triangles (a lane each) and the
+// coverage across a stamp's samples (a lane each), and the depth test reads the mask's bits.
+#pragma once
+
+#include "planes.h"
+
+#include <cstdint>
+
+namespace rast::fast::detail {
+
+inline constexpr int kStampSide = 8;
+
+// What the stamps need of the tile and the context for one sample index: the tile's pixels
+// [i0, i1] x [j0, j1], the subpixel bits, and the sample's offset in grid units.
+struct StampGrid {
+    int i0, i1, j0, j1;
+    int bits;
+    std::int32_t sx, sy;
+};
+
+// For the triangles of `batch` (planes.h: counter-clockwise corners in grid units and pixel boxes)
+// whose bit is set in `narrow` (narrow_edges, setup.h: their edge functions fit in 32 bits over their
+// boxes): those whose block, their box within the tile, is at most kStampSide pixels each way are
+// answered as bits, and their masks[k] set: bit kStampSide r + c for the sample of pixel (i + c, j + r),
+// (i, j) the block's first pixel, inside the triangle by the integer edge functions and the tie rule of
+// docs/design.md (E >= 0 on an owning edge, E > 0 on the others), for c and r within the block.
+std::uint32_t stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid,
+                          std::uint64_t* masks);
+
+}  // namespace rast::fast::detail

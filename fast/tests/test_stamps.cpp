@@ -1,0 +1,102 @@
+// stamp_masks (stamp.h) against the scalar definition of a block's coverage, fixed_edges then
+// fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: which
+// triangles of a run get stamps (narrow, and their block within the tile at most 8 x 8 pixels), and for
+// those, every sample of every row, for each fixed mode and sample count. Corners on sample positions
+// and level edges put samples exactly on edges, where only the tie rule decides; triangles straddle the
+// tile's sides, and boxes of 7 to 9 pixels sit either side of the stamp's size.
+#include "compose.h"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace rast::fast::detail {
+namespace {
+
+// A triangle near the tile [64, 127]^2, its corners often on sample positions or sharing a row.
+Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
+    std::uniform_real_distribution<double> where(56, 136), offset(-4.5, 4.5);
+    std::uniform_int_distribution<int> kind(0, 3);
+    const double cx = where(rng), cy = where(rng);
+    Triangle t;
+    for (Vertex& v : t.v) {
+        v = {cx + offset(rng), cy + offset(rng), 0.5};
+        if (kind(rng) == 0) {  // on a sample of its pixel
+            const SamplePoint o = c.offsets[rng() % c.offsets.size()];
+            v.x = std::floor(v.x) + o.x;
+            v.y = std::floor(v.y) + o.y;
+        }
+    }
+    if (kind(rng) == 0) t.v[1].y = t.v[0].y;  // a level edge
+    return t;
+}
+
+TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
+    const TileRect rect{64, 127, 64, 127};
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        std::mt19937_64 rng(20261127);
+        int stamped = 0, refused = 0, on_edge = 0;
+        for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+            for (const int samples : {1, 4, 8, 16}) {
+                const Context c = make_context<Fault::none>({256, 256}, samples, precision);
+                for (int trial = 0; trial < 400; ++trial) {
+                    std::vector<SmallFixed> run;
+                    while (run.size() < static_cast<std::size_t>(1 + trial % kPlaneBatch)) {
+                        SmallFixed record;
+                        if (place_small_fixed<Fault::none>(random_triangle(rng, c), 7, c, record) == Lane::small_fixed &&
+                            record.i_hi >= rect.i0 && record.i_lo <= rect.i1 && record.j_hi >= rect.j0 &&
+                            record.j_lo <= rect.j1)
+                            run.push_back(record);
+                    }
+                    Plane planes[kPlaneBatch];
+                    PlaneBatch batch;
+                    const std::uint32_t narrow = small_planes(run, c, planes, batch);
+                    StampMasks stamps;
+                    if (narrow != 0) stamps.find(batch, narrow, rect, c);  // as render_tile calls it
+                    for (std::size_t k = 0; k < run.size(); ++k) {
+                        const SmallFixed& t = run[k];
+                        const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
+                        const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
+                        const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide;
+                        const bool want = (narrow >> k & 1) && fits;
+                        ASSERT_EQ((stamps.triangles >> k & 1) != 0, want) << "trial " << trial << " triangle " << k;
+                        if (!want) {
+                            ++refused;
+                            continue;
+                        }
+                        ++stamped;
+                        const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
+                        for (int s = 0; s < samples; ++s) {
+                            const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
+                            std::int64_t e[3], dx[3], dy[3];
+                            fixed_edges_at(edges, c, b, s, e, dx, dy);
+                            const std::uint64_t mask = stamps.masks[s][k];
+                            for (int r = 0; r < kStampSide; ++r) {
+                                const std::uint64_t got = mask >> (kStampSide * r) & first_bits(kStampSide);
+                                const std::uint64_t row = r < b.rows ? fixed_row_coverage(e, dx, dy, b.width, r) : 0;
+                                ASSERT_EQ(got, row) << "trial " << trial << " triangle " << k << " sample " << s
+                                                    << " row " << r;
+                                for (int col = 0; col < b.width && r < b.rows; ++col)
+                                    on_edge += (e[0] + col * dx[0] + r * dy[0]) * (e[1] + col * dx[1] + r * dy[1]) *
+                                                   (e[2] + col * dx[2] + r * dy[2]) == 0;
+                            }
+                        }
+                    }
+                }
+            }
+        hwy::SetSupportedTargetsForTest(0);
+        // Both outcomes are common, and many samples lie on an edge (E = 0, or -1 after the bias).
+        EXPECT_GT(stamped, 3000) << refused;
+        EXPECT_GT(refused, 300) << stamped;
+        EXPECT_GT(on_edge, 1000);
+    }
+}
+
+}  // namespace
+}  // namespace rast::fast::detail
