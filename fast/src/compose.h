@@ -194,9 +194,11 @@ void rasterize_stamp(const SmallFixed& t, const Plane& pl, const StampMasks& sta
     rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             const std::uint64_t mask = stamps.masks[s][k];
-                            return depth_rows_scalar(
-                                b, [mask](int r) { return mask >> (kStampSide * r) & first_bits(kStampSide); }, plane, rows,
-                                undecided);
+                            const auto row = [mask](int r) { return mask >> (kStampSide * r) & first_bits(kStampSide); };
+                            if (b.width * b.rows <= kScalarSamples) return depth_rows_scalar(b, row, plane, rows, undecided);
+                            std::uint64_t covered[kStampSide];
+                            for (int r = 0; r < b.rows; ++r) covered[r] = row(r);
+                            return depth_runs(b, covered, plane, rows, undecided);
                         });
 }
 
