@@ -95,9 +95,6 @@ template <Fault F, class CornersOf, class BlockDepth>
     }
 }
 
-// Blocks of up to this many samples are rasterized in scalar code (scalar.h).
-inline constexpr int kScalarSamples = 16;
-
 // The z-buffer test of block b for integer edges (edges, their steps) straight from a fixed setup,
 // without a Coverage.
 inline bool fixed_block_depth(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
@@ -184,7 +181,7 @@ struct StampMasks {
     }
 };
 
-// rasterize_small for triangle k of a run whose stamps were found: the depth test reads the mask's bits.
+// rasterize_small for triangle k of a run whose stamps were found: the scalar depth test on the mask's bits.
 template <Fault F>
 void rasterize_stamp(const SmallFixed& t, const Plane& pl, const StampMasks& stamps, std::size_t k,
                      const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
@@ -194,11 +191,9 @@ void rasterize_stamp(const SmallFixed& t, const Plane& pl, const StampMasks& sta
     rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             const std::uint64_t mask = stamps.masks[s][k];
-                            const auto row = [mask](int r) { return mask >> (kStampSide * r) & first_bits(kStampSide); };
-                            if (b.width * b.rows <= kScalarSamples) return depth_rows_scalar(b, row, plane, rows, undecided);
-                            std::uint64_t covered[kStampSide];
-                            for (int r = 0; r < b.rows; ++r) covered[r] = row(r);
-                            return depth_runs(b, covered, plane, rows, undecided);
+                            return depth_rows_scalar(
+                                b, [mask](int r) { return mask >> (kStampSide * r) & first_bits(kStampSide); }, plane,
+                                rows, undecided);
                         });
 }
 

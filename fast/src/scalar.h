@@ -11,6 +11,10 @@
 
 namespace rast::fast::detail {
 
+// Blocks of up to this many samples are rasterized in scalar code: a vector kernel's setup and its
+// branches on the rows' runs cost more (and stamps, stamp.h, are no larger).
+inline constexpr int kScalarSamples = 16;
+
 // The float edges of Coverage on row r of block b, in T.
 template <class T>
 std::uint64_t float_row_coverage(const Block& b, const Coverage& cov, int r) {

@@ -5,6 +5,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "scalar.h"
 #include "stamp.h"
 
 #include <bit>
@@ -44,7 +45,8 @@ std::uint32_t SetUp(const PlaneBatch& t, const StampGrid& g, Edges& out) {
         hn::StoreU(width, d, out.width + first);
         hn::StoreU(rows, d, out.rows + first);
         std::uint8_t bytes[8] = {};
-        hn::StoreMaskBits(d, hn::And(hn::Lt(width, past_side), hn::Lt(rows, past_side)), bytes);
+        const auto small = hn::Lt(hn::Mul(width, rows), hn::Set(d, kScalarSamples + 1));
+        hn::StoreMaskBits(d, hn::And(hn::And(hn::Lt(width, past_side), hn::Lt(rows, past_side)), small), bytes);
         std::uint32_t bits = 0;
         std::memcpy(&bits, bytes, sizeof bits);
         fits |= bits << first;

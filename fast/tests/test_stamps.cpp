@@ -1,9 +1,9 @@
 // stamp_masks (stamp.h) against the scalar definition of a block's coverage, fixed_edges then
 // fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: which
-// triangles of a run get stamps (narrow, and their block within the tile at most 8 x 8 pixels), and for
+// triangles of a run get stamps (narrow, and their block within the tile at most 8 x 8 and 16 pixels), and for
 // those, every sample of every row, for each fixed mode and sample count. Corners on sample positions
 // and level edges put samples exactly on edges, where only the tie rule decides; triangles straddle the
-// tile's sides, and boxes of 7 to 9 pixels sit either side of the stamp's size.
+// tile's sides, and blocks from 1 x 9 to 9 x 9 pixels sit either side of the stamp's limits.
 #include "compose.h"
 
 #include <gtest/gtest.h>
@@ -19,12 +19,15 @@ namespace {
 
 // A triangle near the tile [64, 127]^2, its corners often on sample positions or sharing a row.
 Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
-    std::uniform_real_distribution<double> where(56, 136), offset(-4.5, 4.5);
+    std::uniform_real_distribution<double> where(56, 136), unit(-1, 1);
     std::uniform_int_distribution<int> kind(0, 3);
     const double cx = where(rng), cy = where(rng);
+    // Reaches from tiny to 9 pixels, and slivers 9 pixels long.
+    const double reaches[][2] = {{1.2, 1.2}, {2, 2}, {4.5, 4.5}, {4.5, 0.6}, {0.6, 4.5}};
+    const auto& reach = reaches[rng() % 5];
     Triangle t;
     for (Vertex& v : t.v) {
-        v = {cx + offset(rng), cy + offset(rng), 0.5};
+        v = {cx + reach[0] * unit(rng), cy + reach[1] * unit(rng), 0.5};
         if (kind(rng) == 0) {  // on a sample of its pixel
             const SamplePoint o = c.offsets[rng() % c.offsets.size()];
             v.x = std::floor(v.x) + o.x;
@@ -63,7 +66,8 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                         const SmallFixed& t = run[k];
                         const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
                         const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
-                        const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide;
+                        const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide &&
+                                          (i1 - i0 + 1) * (j1 - j0 + 1) <= kScalarSamples;
                         const bool want = (narrow >> k & 1) && fits;
                         ASSERT_EQ((stamps.triangles >> k & 1) != 0, want) << "trial " << trial << " triangle " << k;
                         if (!want) {
