@@ -134,27 +134,33 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         return true;
     };
     // The library places kPlaceBatch triangles at a time; the injected faults reach place_small_fixed's
-    // own steps, so the faulty twins place one at a time. Each bin stays in id order: a batch's small
-    // triangles go to the fixed bins, then its others, in order, to theirs; the first bad triangle of the
-    // chunk is the first general one that is (the small and culled lanes are finite).
+    // own steps, so the faulty twins place one at a time. Each bin stays in id order: the lanes the batch
+    // leaves undecided are placed first, then the batch's small triangles go to the fixed bins in lane
+    // order, then its others, in order, to theirs; the first bad triangle of the chunk is the first
+    // general one that is (the small, culled and undecided lanes are finite).
     if (lean && F == Fault::none) {
         const PlaceGrid grid = place_grid(scene.c);
         PlacedBatch batch;
+        SmallFixed decided[kPlaceBatch];  // the undecided lanes that place_small_fixed found small
         for (std::size_t id = begin; id != end;) {
             const int n = static_cast<int>(std::min<std::size_t>(kPlaceBatch, end - id));
             place_small_batch(&scene.triangles[id], n, grid, batch);
-            for (std::uint32_t lanes = batch.small; lanes != 0; lanes &= lanes - 1) {
+            std::uint32_t small = batch.small, general = batch.general;
+            for (std::uint32_t lanes = batch.undecided; lanes != 0; lanes &= lanes - 1) {
                 const int k = std::countr_zero(lanes);
-                bin_small(small_fixed_of(batch, k, static_cast<std::int32_t>(id + k)));
+                const auto named = static_cast<std::int32_t>(id + k);
+                const Lane lane = place_small_fixed<F>(scene.triangles[id + k], named, scene.c, decided[k]);
+                small |= std::uint32_t{lane == Lane::small_fixed} << k;
+                general |= std::uint32_t{lane == Lane::general} << k;
             }
-            for (std::uint32_t lanes = batch.general | batch.undecided; lanes != 0; lanes &= lanes - 1) {
+            for (std::uint32_t lanes = small; lanes != 0; lanes &= lanes - 1) {
                 const int k = std::countr_zero(lanes);
-                SmallFixed record;
-                const Lane lane = batch.undecided >> k & 1
-                                      ? place_small_fixed<F>(scene.triangles[id + k], static_cast<std::int32_t>(id + k),
-                                                             scene.c, record)
-                                      : Lane::general;
-                if (!bin(id + k, lane, record)) return;
+                const auto named = static_cast<std::int32_t>(id + k);
+                bin_small(batch.small >> k & 1 ? small_fixed_of(batch, k, named) : decided[k]);
+            }
+            for (std::uint32_t lanes = general; lanes != 0; lanes &= lanes - 1) {
+                const int k = std::countr_zero(lanes);
+                if (!bin(id + k, Lane::general, decided[k])) return;
             }
             id += static_cast<std::size_t>(n);
         }
@@ -162,8 +168,8 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     }
     for (std::size_t id = begin; id != end; ++id) {
         SmallFixed record;
-        const Lane lane = lean ? place_small_fixed<F>(scene.triangles[id], static_cast<std::int32_t>(id), scene.c, record)
-                               : Lane::general;
+        const auto named = static_cast<std::int32_t>(id);
+        const Lane lane = lean ? place_small_fixed<F>(scene.triangles[id], named, scene.c, record) : Lane::general;
         if (!bin(id, lane, record)) return;
     }
 }

@@ -176,7 +176,7 @@ struct StampMasks {
         for (std::size_t s = 0; s < c.offsets.size(); ++s) {
             const StampGrid grid{rect.i0, rect.i1, rect.j0, rect.j1, c.bits, static_cast<std::int32_t>(c.sx[s]),
                                  static_cast<std::int32_t>(c.sy[s])};
-            triangles = stamp_masks(batch, narrow, grid, masks[s]);
+            triangles = stamp_masks(batch, narrow, grid, masks[s]);  // the same at every sample index
         }
     }
 };

@@ -1,9 +1,11 @@
 // The rasterizer proper: screen tiles of 64 x 64 pixels, binned triangles composed in id order per tile,
-// trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample index. Templated on the injected
-// fault; render.cpp instantiates Fault::none, the testing target the others. This file is the threaded
-// driver and a tile's merge of its bins; the stages are binning.h (bins), setup.h (placing and setting
-// up a triangle), coverage.h (which samples), tile_buffer.h (a thread's tile) and compose.h (a triangle
-// into a tile), then line_pass.h (the lines, last).
+// trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample index (a tiny
+// triangle's coverage found with its run's, in stamps). Templated on the injected fault; render.cpp
+// instantiates Fault::none, the testing target the others. This file is the threaded driver and a tile's
+// merge of its bins; the stages are binning.h (bins; small triangles placed eight at a time,
+// place_batch.h), setup.h (placing and setting up a triangle), coverage.h (which samples; stamp.h for
+// tiny blocks), tile_buffer.h (a thread's tile) and compose.h (a triangle into a tile), then
+// line_pass.h (the lines, last).
 #pragma once
 
 #include "binning.h"

@@ -27,7 +27,7 @@ struct PlaceGrid {
 // pixel bounding box). The small and culled lanes' coordinates are finite; a triangle with a depth that
 // is not finite is general. `undecided`: the lanes whose coordinate differences make products of 2^53 or
 // more (far ends of a triangle clipped to a small box), whose orientation doubles cannot decide
-// exactly; place_small_fixed decides them.
+// exactly; place_small_fixed decides them, and may find them small, culled or general.
 struct PlacedBatch {
     double z[3][kPlaceBatch];
     std::int32_t x[3][kPlaceBatch], y[3][kPlaceBatch];

@@ -17,11 +17,11 @@
 namespace rast::fast::detail {
 namespace {
 
-// A triangle near the tile [64, 127]^2, its corners often on sample positions or sharing a row.
-Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
-    std::uniform_real_distribution<double> where(56, 136), unit(-1, 1);
+// A triangle near the tile, its corners often on sample positions or sharing a row.
+Triangle random_triangle(std::mt19937_64& rng, const Context& c, const TileRect& rect) {
+    std::uniform_real_distribution<double> where(rect.i0 - 8, rect.i1 + 9), unit(-1, 1);
     std::uniform_int_distribution<int> kind(0, 3);
-    const double cx = where(rng), cy = where(rng);
+    const double cx = where(rng), cy = where(rng) - rect.i0 + rect.j0;
     // Reaches from tiny to 9 pixels, and slivers 9 pixels long.
     const double reaches[][2] = {{1.2, 1.2}, {2, 2}, {4.5, 4.5}, {4.5, 0.6}, {0.6, 4.5}};
     const auto& reach = reaches[rng() % 5];
@@ -39,63 +39,79 @@ Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
 }
 
 TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
-    const TileRect rect{64, 127, 64, 127};
+    // A tile inside a small viewport, and the last tile of one as large as fixed16's range allows, where
+    // the block's first sample in grid units is largest.
+    struct Where {
+        Viewport vp;
+        TileRect rect;
+    };
+    const Where places[] = {{{256, 256}, {64, 127, 64, 127}}, {{8128, 8128}, {8064, 8127, 8064, 8127}}};
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
         SCOPED_TRACE(hwy::TargetName(target));
         std::mt19937_64 rng(20261127);
         int stamped = 0, refused = 0, on_edge = 0;
-        for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
-            for (const int samples : {1, 4, 8, 16}) {
-                const Context c = make_context<Fault::none>({256, 256}, samples, precision);
-                for (int trial = 0; trial < 400; ++trial) {
-                    std::vector<SmallFixed> run;
-                    while (run.size() < static_cast<std::size_t>(1 + trial % kPlaneBatch)) {
-                        SmallFixed record;
-                        if (place_small_fixed<Fault::none>(random_triangle(rng, c), 7, c, record) == Lane::small_fixed &&
-                            record.i_hi >= rect.i0 && record.i_lo <= rect.i1 && record.j_hi >= rect.j0 &&
-                            record.j_lo <= rect.j1)
-                            run.push_back(record);
-                    }
-                    Plane planes[kPlaneBatch];
-                    PlaneBatch batch;
-                    const std::uint32_t narrow = small_planes(run, c, planes, batch);
-                    StampMasks stamps;
-                    if (narrow != 0) stamps.find(batch, narrow, rect, c);  // as render_tile calls it
-                    for (std::size_t k = 0; k < run.size(); ++k) {
-                        const SmallFixed& t = run[k];
-                        const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
-                        const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
-                        const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide &&
-                                          (i1 - i0 + 1) * (j1 - j0 + 1) <= kScalarSamples;
-                        const bool want = (narrow >> k & 1) && fits;
-                        ASSERT_EQ((stamps.triangles >> k & 1) != 0, want) << "trial " << trial << " triangle " << k;
-                        if (!want) {
-                            ++refused;
-                            continue;
+        for (const auto& [vp, rect] : places)
+            for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+                for (const int samples : {1, 4, 8, 16}) {
+                    const Context c = make_context<Fault::none>(vp, samples, precision);
+                    ASSERT_TRUE(c.fixed_fits);
+                    for (int trial = 0; trial < 200; ++trial) {
+                        std::vector<SmallFixed> run;
+                        while (run.size() < static_cast<std::size_t>(1 + trial % kPlaneBatch)) {
+                            SmallFixed record;
+                            const Triangle t = random_triangle(rng, c, rect);
+                            if (place_small_fixed<Fault::none>(t, 7, c, record) == Lane::small_fixed &&
+                                record.i_hi >= rect.i0 && record.i_lo <= rect.i1 && record.j_hi >= rect.j0 &&
+                                record.j_lo <= rect.j1)
+                                run.push_back(record);
                         }
-                        ++stamped;
-                        const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
-                        for (int s = 0; s < samples; ++s) {
-                            const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
-                            std::int64_t e[3], dx[3], dy[3];
-                            fixed_edges_at(edges, c, b, s, e, dx, dy);
-                            const std::uint64_t mask = stamps.masks[s][k];
-                            for (int r = 0; r < kStampSide; ++r) {
-                                const std::uint64_t got = mask >> (kStampSide * r) & first_bits(kStampSide);
-                                const std::uint64_t row = r < b.rows ? fixed_row_coverage(e, dx, dy, b.width, r) : 0;
-                                ASSERT_EQ(got, row) << "trial " << trial << " triangle " << k << " sample " << s
-                                                    << " row " << r;
-                                for (int col = 0; col < b.width && r < b.rows; ++col)
-                                    on_edge += (e[0] + col * dx[0] + r * dy[0]) * (e[1] + col * dx[1] + r * dy[1]) *
-                                                   (e[2] + col * dx[2] + r * dy[2]) == 0;
+                        Plane planes[kPlaneBatch];
+                        PlaneBatch batch;
+                        const std::uint32_t narrow = small_planes(run, c, planes, batch);
+                        StampMasks stamps;
+                        if (narrow != 0) stamps.find(batch, narrow, rect, c);  // as render_tile calls it
+                        for (std::size_t k = 0; k < run.size(); ++k) {
+                            const SmallFixed& t = run[k];
+                            const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
+                            const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
+                            const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide &&
+                                              (i1 - i0 + 1) * (j1 - j0 + 1) <= kScalarSamples;
+                            const bool want = (narrow >> k & 1) && fits;
+                            ASSERT_EQ((stamps.triangles >> k & 1) != 0, want) << "trial " << trial << " triangle " << k;
+                            if (!want) {
+                                ++refused;
+                                continue;
+                            }
+                            ++stamped;
+                            const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
+                            for (int s = 0; s < samples; ++s) {
+                                const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
+                                std::int64_t e[3], dx[3], dy[3];
+                                fixed_edges_at(edges, c, b, s, e, dx, dy);
+                                const std::uint64_t mask = stamps.masks[s][k];
+                                for (int r = 0; r < kStampSide; ++r) {
+                                    const std::uint64_t got = mask >> (kStampSide * r) & first_bits(kStampSide);
+                                    const std::uint64_t row =
+                                        r < b.rows ? fixed_row_coverage(e, dx, dy, b.width, r) : 0;
+                                    ASSERT_EQ(got, row) << "trial " << trial << " triangle " << k << " sample " << s
+                                                        << " row " << r;
+                                    for (int col = 0; col < b.width && r < b.rows; ++col) {
+                                        bool on = false;
+                                        for (int k = 0; k < 3; ++k) {
+                                            const std::int64_t v = e[k] + col * dx[k] + r * dy[k];
+                                            on = on || v == 0 || v == -1;
+                                        }
+                                        on_edge += on;
+                                    }
+                                }
                             }
                         }
                     }
                 }
-            }
         hwy::SetSupportedTargetsForTest(0);
-        // Both outcomes are common, and many samples lie on an edge (E = 0, or -1 after the bias).
+        // Both outcomes are common, and many samples lie on an edge or beside it (E = 0 or -1, the bias
+        // included).
         EXPECT_GT(stamped, 3000) << refused;
         EXPECT_GT(refused, 300) << stamped;
         EXPECT_GT(on_edge, 1000);
