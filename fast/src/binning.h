@@ -155,8 +155,8 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
             }
             for (std::uint32_t lanes = small; lanes != 0; lanes &= lanes - 1) {
                 const int k = std::countr_zero(lanes);
-                const auto named = static_cast<std::int32_t>(id + k);
-                bin_small(batch.small >> k & 1 ? small_fixed_of(batch, k, named) : decided[k]);
+                if (batch.small >> k & 1) bin_small(small_fixed_of(batch, k, static_cast<std::int32_t>(id + k)));
+                else bin_small(decided[k]);
             }
             for (std::uint32_t lanes = general; lanes != 0; lanes &= lanes - 1) {
                 const int k = std::countr_zero(lanes);
