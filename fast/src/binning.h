@@ -57,7 +57,7 @@ void append(std::vector<Record>& bin, const Record& record) {
 inline PlaceGrid place_grid(const Context& c) {
     return {double(std::int64_t{1} << c.bits), c.unit, c.coordinate_limit,
             double(c.sx_min), double(c.sx_max), double(c.sy_min), double(c.sy_max),
-            double(c.vp.width), double(c.vp.height)};
+            double(c.vp.width), double(c.vp.height), double(kSmallSide)};
 }
 
 // Lane k of a batch (place_batch.h) as place_small_fixed would have filled its record.

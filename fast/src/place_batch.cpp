@@ -76,7 +76,7 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
                                 g.sx_max, g.width, i_lo, i_hi);
         const auto on_y = range(hn::Min(hn::Min(y[0], y[1]), y[2]), hn::Max(hn::Max(y[0], y[1]), y[2]), g.sy_min,
                                 g.sy_max, g.height, j_lo, j_hi);
-        const V side = hn::Set(d, 32);  // kSmallSide
+        const V side = hn::Set(d, g.small_side);
         const auto small_box = hn::And(hn::Lt(hn::Sub(i_hi, i_lo), side), hn::Lt(hn::Sub(j_hi, j_lo), side));
         // Out of range: general; zero area or no pixel: culled; a box too big: general. A depth that is not
         // finite makes the lane general too, where the caller's check of every coordinate finds it.

@@ -14,11 +14,13 @@ namespace rast::fast::detail {
 inline constexpr int kPlaceBatch = 8;
 
 // What the placing needs of the Context (setup.h), in doubles: the grid's scale 2^bits and spacing
-// 2^-bits, coordinate_limit, the sample offsets' extent in grid units and the viewport's size.
+// 2^-bits, coordinate_limit, the sample offsets' extent in grid units, the viewport's size, and the
+// small lane's largest box (kSmallSide).
 struct PlaceGrid {
     double scale, unit, limit;
     double sx_min, sx_max, sy_min, sy_max;
     double width, height;
+    double small_side;
 };
 
 // kPlaceBatch triangles placed, one array per field, each lane what place_small_fixed<Fault::none> makes
