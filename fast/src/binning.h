@@ -73,6 +73,7 @@ inline SmallFixed small_fixed_of(const PlacedBatch& b, int k, std::int32_t id) {
     s.j_lo = b.j_lo[k];
     s.j_hi = b.j_hi[k];
     s.id = id;
+    s.narrow = b.narrow >> k & 1;
     return s;
 }
 

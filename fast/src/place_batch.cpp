@@ -37,7 +37,7 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
     const DI di;
     const DI32 di32;
     const int lanes = static_cast<int>(hn::Lanes(d));
-    out.small = out.culled = out.general = out.undecided = 0;
+    out.small = out.culled = out.general = out.undecided = out.narrow = 0;
     const V scale = hn::Set(d, g.scale), unit = hn::Set(d, g.unit), limit = hn::Set(d, g.limit);
     const V round = hn::Set(d, 0x1.8p52), minus_one = hn::Set(d, -1), zero = hn::Zero(d);
     for (int first = 0; first < n; first += lanes) {
@@ -72,10 +72,15 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
             return hn::Le(from, to);
         };
         V i_lo, i_hi, j_lo, j_hi;
-        const auto on_x = range(hn::Min(hn::Min(x[0], x[1]), x[2]), hn::Max(hn::Max(x[0], x[1]), x[2]), g.sx_min,
-                                g.sx_max, g.width, i_lo, i_hi);
-        const auto on_y = range(hn::Min(hn::Min(y[0], y[1]), y[2]), hn::Max(hn::Max(y[0], y[1]), y[2]), g.sy_min,
-                                g.sy_max, g.height, j_lo, j_hi);
+        const V x_min = hn::Min(hn::Min(x[0], x[1]), x[2]), x_max = hn::Max(hn::Max(x[0], x[1]), x[2]);
+        const V y_min = hn::Min(hn::Min(y[0], y[1]), y[2]), y_max = hn::Max(hn::Max(y[0], y[1]), y[2]);
+        const auto on_x = range(x_min, x_max, g.sx_min, g.sx_max, g.width, i_lo, i_hi);
+        const auto on_y = range(y_min, y_max, g.sy_min, g.sy_max, g.height, j_lo, j_hi);
+        // narrow_edges: 2 w (w + scale) + 1 < 2^31, w the larger extent; exact below 2^53, and a rounded
+        // value of 2^53 or more is still past 2^31.
+        const V w = hn::Max(hn::Sub(x_max, x_min), hn::Sub(y_max, y_min));
+        const V bound = hn::Add(hn::Mul(hn::Add(w, w), hn::Add(w, scale)), hn::Set(d, 1));
+        const auto narrow = hn::Lt(bound, hn::Set(d, 0x1p31));
         const V side = hn::Set(d, g.small_side);
         const auto small_box = hn::And(hn::Lt(hn::Sub(i_hi, i_lo), side), hn::Lt(hn::Sub(j_hi, j_lo), side));
         // Out of range: general; zero area or no pixel: culled; a box too big: general. A depth that is not
@@ -90,6 +95,7 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
         out.culled |= bits_of(culled, first);
         out.general |= bits_of(hn::AndNot(small, hn::AndNot(culled, decided)), first);
         out.small |= bits_of(small, first);
+        out.narrow |= bits_of(hn::And(small, narrow), first);
         // Counter-clockwise: a clockwise triangle's corners 1 and 2 trade places.
         const auto clockwise = hn::Lt(cross, zero);
         const auto corner = [&](const V* c, int k) { return k == 0 ? c[0] : hn::IfThenElse(clockwise, c[3 - k], c[k]); };

@@ -270,6 +270,7 @@ struct SmallFixed {
     std::int32_t x[3], y[3];  // |.| <= 2^29
     std::int32_t i_lo, i_hi, j_lo, j_hi;
     std::int32_t id;
+    bool narrow;  // narrow_edges, found once when placed (in the record's padding)
 };
 
 // Whether the edge functions of `t` fit in 32 bits at every sample of its bounding box (scale: grid
@@ -318,6 +319,7 @@ Lane place_small_fixed(const Triangle& t, std::int32_t id, const Context& c, Sma
         out.z[k] = t.v[order[k]].z;
     }
     out.id = id;
+    out.narrow = narrow_edges(out, std::int64_t{1} << c.bits);
     return Lane::small_fixed;
 }
 
@@ -336,7 +338,7 @@ inline std::uint32_t small_planes(std::span<const SmallFixed> run, const Context
                                   PlaneBatch& batch) {
     std::uint32_t narrow = 0;
     for (std::size_t k = 0; k < run.size(); ++k)
-        narrow |= std::uint32_t{narrow_edges(run[k], std::int64_t{1} << c.bits)} << k;
+        narrow |= std::uint32_t{run[k].narrow} << k;
     if (narrow != 0) {
         for (std::size_t k = 0; k < kPlaneBatch; ++k) {
             const SmallFixed& t = run[k < run.size() ? k : 0];

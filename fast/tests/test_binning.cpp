@@ -69,6 +69,7 @@ void expect_same_bins(const Chunk& got, const Chunk& want, const std::string& wh
             ASSERT_EQ(g[k].i_hi, e[k].i_hi) << what;
             ASSERT_EQ(g[k].j_lo, e[k].j_lo) << what;
             ASSERT_EQ(g[k].j_hi, e[k].j_hi) << what;
+            ASSERT_EQ(g[k].narrow, e[k].narrow) << what;
         }
     }
     for (std::size_t tile = 0; tile < want.small_bins.size(); ++tile) {

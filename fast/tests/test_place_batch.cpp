@@ -4,8 +4,8 @@
 // triangles chosen where the steps can go wrong: corners on and off the grid's ties, clockwise and
 // counter-clockwise, zero area, boxes of 31, 32 and 33 pixels, boxes clipped by the viewport and outside
 // it, coordinates at and past the fixed range, NaN and infinity, corners so far apart that the cross
-// product's terms pass 2^53 (undecided lanes: test_binning.cpp checks what becomes of them), and slivers
-// whose cross product is +-1 between terms near 2^56.
+// product's terms pass 2^53 (undecided lanes: test_binning.cpp checks what becomes of them), slivers
+// whose cross product is +-1 between terms near 2^56, and extents either side of narrow_edges' limit.
 #include "binning.h"
 
 #include <gtest/gtest.h>
@@ -66,6 +66,19 @@ Triangle sliver(std::mt19937_64& rng, const Context& c) {
     return t;
 }
 
+// A triangle whose larger extent w is the last or the first past narrow_edges' limit
+// (2 w (w + scale) + 1 < 2^31), its box clipped small at the viewport's far corner.
+Triangle at_the_narrow_limit(std::mt19937_64& rng, const Context& c) {
+    const double scale = 1 / c.unit;
+    std::int64_t w = 1;
+    while (2 * (w + 1) * (w + 1 + static_cast<std::int64_t>(scale)) + 1 < (std::int64_t{1} << 31)) ++w;
+    w += static_cast<std::int64_t>(rng() % 4) - 1;  // w* - 1 to w* + 2
+    const double x0 = c.vp.width - 1.5, y0 = c.vp.height - 1.5, far = static_cast<double>(w) * c.unit;
+    Triangle t{{Vertex{x0, y0, 0.5}, Vertex{x0 + far, y0 + 3 * c.unit, 0.25}, Vertex{x0 + 5 * c.unit, y0 + far, 0.75}}};
+    if (rng() % 2) std::swap(t.v[1], t.v[2]);
+    return t;
+}
+
 Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
     std::uniform_real_distribution<double> where(-40, 1064);
     std::uniform_int_distribution<int> shape(0, 10);
@@ -93,6 +106,8 @@ Triangle random_triangle(std::mt19937_64& rng, const Context& c) {
         }
         case 4:
             return sliver(rng, c);
+        case 5:
+            return at_the_narrow_limit(rng, c);
         default:  // tiny to small
             for (Vertex& v : t.v) v = random_vertex(rng, c, cx, cy, shape(rng) < 7 ? 3 : 12);
             break;
@@ -111,6 +126,7 @@ void expect_same_record(const SmallFixed& got, const SmallFixed& want, const std
     EXPECT_EQ(got.j_lo, want.j_lo) << what;
     EXPECT_EQ(got.j_hi, want.j_hi) << what;
     EXPECT_EQ(got.id, want.id) << what;
+    EXPECT_EQ(got.narrow, want.narrow) << what;
 }
 
 TEST(PlaceBatch, EqualsPlaceSmallFixedOnEveryTarget) {
