@@ -135,16 +135,25 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
                         });
 }
 
+// rasterize_blocks for a small triangle's binned record over its box within the tile; its corners are
+// placed again only if the exact order needs them.
+template <Fault F, class BlockDepth>
+[[gnu::always_inline]] inline void rasterize_record(const SmallFixed& t, const Plane& pl, const TileRect& rect,
+                                                    TileBuffer& tile, const SceneView& scene, BlockDepth depth) {
+    const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
+    const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
+    const Context& c = scene.c;
+    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene, depth);
+}
+
 // A small triangle of the 64-bit fixed path, straight from its binned record and its plane: its edges
 // are all else it needs, and a narrow one's edges fit the 32-bit lanes of depth_small.
 template <Fault F>
 void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const TileRect& rect, TileBuffer& tile,
                      const SceneView& scene) {
     const Context& c = scene.c;
-    const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
-    const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
     const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
-    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene,
+    rasterize_record<F>(t, pl, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
                                 return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
@@ -185,10 +194,7 @@ struct StampMasks {
 template <Fault F>
 void rasterize_stamp(const SmallFixed& t, const Plane& pl, const StampMasks& stamps, std::size_t k,
                      const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
-    const Context& c = scene.c;
-    const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
-    const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
-    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene,
+    rasterize_record<F>(t, pl, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             const std::uint64_t mask = stamps.masks[s][k];
                             return depth_rows_scalar(
