@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 
 namespace rast::fast::detail {
 
@@ -61,12 +62,38 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
     }
 }
 
-// What every path shares: triangle `id` (its depth plane; corners() answers its placed corners, which
-// only the exact order reads) into the tile's z-buffer over pixels [i0, i1] x [j0, j1] of its bounding
-// box, behind hierarchical z, one block per sample index. depth(b, s, plane, rows, undecided) runs the
-// z-buffer test on block b of sample index s and answers whether it left samples undecided; those get
-// the exact order. Always inlined: as a call of its own, its eleven arguments and the plane went through
-// the stack, a tenth of a small triangle's setup.
+// Counts a block of `samples` samples towards the refresh of the tile's far depth, refreshing it when due.
+inline void count_block(TileBuffer& tile, std::size_t samples, const TileRect& rect, const Context& c) {
+    tile.since_far += samples;
+    if (tile.since_far >= kFarRefresh * tile.size)
+        tile.refresh_far(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
+}
+
+// Triangle plane.id (corners() answers its placed corners, which only the exact order reads) into the
+// tile's z-buffer over pixels [i0, i1] x [j0, j1], one block per sample index, its bound already
+// admitted: depth(b, s, plane, rows, undecided) runs the z-buffer test on block b of sample index s and
+// answers whether it left samples undecided; those get the exact order.
+template <Fault F, class CornersOf, class BlockDepth>
+[[gnu::always_inline]] inline void compose_blocks(CornersOf corners, const DepthPlane& plane, int i0, int i1,
+                                                  int j0, int j1, const TileRect& rect, TileBuffer& tile,
+                                                  const SceneView& scene, BlockDepth depth) {
+    const Context& c = scene.c;
+    std::uint64_t undecided[kTile];
+    for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
+        const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
+        const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
+        const DepthRows rows = tile.rows_at(at);
+        if (!depth(b, s, plane, rows, undecided)) continue;
+        decltype(auto) v = corners();  // once for the block's rows
+        for (int r = 0; r < b.rows; ++r)
+            if (undecided[r] != 0) resolve<F>(v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
+    }
+}
+
+// What every path shares: triangle `id` (its depth plane) into the tile's z-buffer over pixels
+// [i0, i1] x [j0, j1] of its bounding box, behind hierarchical z, by compose_blocks. Always inlined: as
+// a call of its own, its eleven arguments and the plane went through the stack, a tenth of a small
+// triangle's setup.
 template <Fault F, class CornersOf, class BlockDepth>
 [[gnu::always_inline]] inline void rasterize_blocks(CornersOf corners, const Plane& pl, std::int32_t id, int i0,
                                                     int i1, int j0, int j1, const TileRect& rect, TileBuffer& tile,
@@ -78,21 +105,10 @@ template <Fault F, class CornersOf, class BlockDepth>
     }
     const Context& c = scene.c;
     if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return;
-    tile.since_far += static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size();
-    if (tile.since_far >= kFarRefresh * tile.size)
-        tile.refresh_far(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
+    count_block(tile, static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size(), rect, c);
     tile.admit(pl.err);
     const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, id};
-    std::uint64_t undecided[kTile];
-    for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s) {
-        const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
-        const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
-        const DepthRows rows = tile.rows_at(at);
-        if (!depth(b, s, plane, rows, undecided)) continue;
-        decltype(auto) v = corners();  // once for the block's rows
-        for (int r = 0; r < b.rows; ++r)
-            if (undecided[r] != 0) resolve<F>(v, plane, b, r, undecided[r], tile, at + r * tile.cols, scene);
-    }
+    compose_blocks<F>(corners, plane, i0, i1, j0, j1, rect, tile, scene, depth);
 }
 
 // The z-buffer test of block b for integer edges (edges, their steps) straight from a fixed setup,
@@ -135,15 +151,9 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
                         });
 }
 
-// rasterize_blocks for a small triangle's binned record over its box within the tile; its corners are
-// placed again only if the exact order needs them.
-template <Fault F, class BlockDepth>
-[[gnu::always_inline]] inline void rasterize_record(const SmallFixed& t, const Plane& pl, const TileRect& rect,
-                                                    TileBuffer& tile, const SceneView& scene, BlockDepth depth) {
-    const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
-    const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
-    const Context& c = scene.c;
-    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, i0, i1, j0, j1, rect, tile, scene, depth);
+// A small triangle's binned record: its box within the tile.
+inline TileRect box_in(const SmallFixed& t, const TileRect& rect) {
+    return {std::max(rect.i0, t.i_lo), std::min(rect.i1, t.i_hi), std::max(rect.j0, t.j_lo), std::min(rect.j1, t.j_hi)};
 }
 
 // A small triangle of the 64-bit fixed path, straight from its binned record and its plane: its edges
@@ -153,7 +163,8 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const Ti
                      const SceneView& scene) {
     const Context& c = scene.c;
     const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
-    rasterize_record<F>(t, pl, rect, tile, scene,
+    const TileRect box = box_in(t, rect);
+    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
                                 return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
@@ -180,27 +191,84 @@ inline constexpr int kMaxSamples = 16;
 // The stamps of a run of small triangles in a tile (stamp.h), for every sample index.
 struct StampMasks {
     std::uint32_t triangles = 0;  // bit k: run[k] has stamps
+    std::size_t samples = 0;      // their blocks' samples, at every sample index
     std::uint64_t masks[kMaxSamples][kPlaneBatch];
     void find(const PlaneBatch& batch, std::uint32_t narrow, const TileRect& rect, const Context& c) {
         for (std::size_t s = 0; s < c.offsets.size(); ++s) {
             const StampGrid grid{rect.i0, rect.i1, rect.j0, rect.j1, c.bits, static_cast<std::int32_t>(c.sx[s]),
                                  static_cast<std::int32_t>(c.sy[s])};
-            triangles = stamp_masks(batch, narrow, grid, masks[s]);  // the same at every sample index
+            const Stamped stamped = stamp_masks(batch, narrow, grid, masks[s]);  // the same blocks at every index
+            triangles = stamped.triangles;
+            samples = stamped.samples * c.offsets.size();
         }
     }
 };
 
-// rasterize_small for triangle k of a run whose stamps were found: the scalar depth test on the mask's bits.
+// depth_rows_scalar (scalar.h) for a stamp's coverage, bit kStampSide r + c for column c of row r: one
+// loop over the mask's bits, not one per row (a tiny triangle's stamp has two or three samples on as
+// many rows). The same operations sample by sample, so the same result.
+template <bool kPerSample>
+[[gnu::always_inline]] inline bool depth_stamp(const Block& b, std::uint64_t mask, const DepthPlane& p,
+                                               DepthRows rows, std::uint64_t* undecided) {
+    std::uint64_t open = 0;
+    for (; mask != 0; mask &= mask - 1) {
+        const int k = std::countr_zero(mask), r = k / kStampSide, col = k % kStampSide;
+        const double px = double(b.i0 + col) + b.sx, py = double(b.j0 + r) + b.sy;
+        const double z = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
+        const std::ptrdiff_t at = r * rows.stride + col;
+        const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
+        const double gap = stored - z, margin = p.err + stored_err;
+        if (gap > margin) {
+            rows.z[at] = z;
+            if constexpr (kPerSample) rows.err[at] = p.err;
+            rows.ids[at] = p.id;
+        } else if (!(gap < -margin)) {
+            open |= std::uint64_t{1} << k;
+        }
+    }
+    if (open == 0) return false;
+    for (int r = 0; r < b.rows; ++r) undecided[r] = open >> (kStampSide * r) & first_bits(kStampSide);
+    return true;
+}
+
+// The small triangles run[k] (their planes[k]; narrow: bit k for a narrow one) in order: those whose
+// stamps were found (stamps.triangles) test depth on the masks' bits, the others by rasterize_small.
+// The stamps' bookkeeping is done once for the run, before any is composed: their blocks are counted
+// for the far depth, and of their bounds the largest and the smallest admitted, which leaves the tile's
+// bound above each and switches it to a bound per sample if one of them is far from it. Their planes
+// may then carry a larger tile bound than one at a time would: still a bound.
 template <Fault F>
-void rasterize_stamp(const SmallFixed& t, const Plane& pl, const StampMasks& stamps, std::size_t k,
-                     const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
-    rasterize_record<F>(t, pl, rect, tile, scene,
-                        [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
-                            const std::uint64_t mask = stamps.masks[s][k];
-                            return depth_rows_scalar(
-                                b, [mask](int r) { return mask >> (kStampSide * r) & first_bits(kStampSide); }, plane,
-                                rows, undecided);
-                        });
+void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::uint32_t narrow,
+                   const StampMasks& stamps, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
+    const Context& c = scene.c;
+    if (stamps.triangles != 0) {
+        double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+        for (std::uint32_t m = stamps.triangles; m != 0; m &= m - 1) {
+            const int k = std::countr_zero(m);
+            smallest = std::min(smallest, planes[k].err);
+            largest = std::max(largest, planes[k].err);
+        }
+        count_block(tile, stamps.samples, rect, c);
+        tile.admit(largest);
+        tile.admit(smallest);
+    }
+    for (std::size_t k = 0; k < run.size(); ++k) {
+        const SmallFixed& t = run[k];
+        const Plane& pl = planes[k];
+        if (!(stamps.triangles >> k & 1)) {
+            rasterize_small<F>(t, pl, narrow >> k & 1, rect, tile, scene);
+            continue;
+        }
+        const TileRect box = box_in(t, rect);
+        if (behind_tile(pl, c, tile, box.i0, box.i1, box.j0, box.j1)) continue;
+        const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, t.id};
+        compose_blocks<F>([&] { return placed_of(t, c).v; }, plane, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
+                          [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                              return with_stored_bounds(rows, [&](auto per_sample) {
+                                  return depth_stamp<per_sample>(b, stamps.masks[s][k], plane, rows, undecided);
+                              });
+                          });
+    }
 }
 
 }  // namespace rast::fast::detail

@@ -89,10 +89,7 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
                 // faulty twins' bugs are in the steps stamps skip, so they take none.
                 StampMasks stamps;
                 if (F == Fault::none && narrow != 0) stamps.find(batch, narrow, rect, scene.c);
-                for (std::size_t k = 0; k < n; ++k) {
-                    if (stamps.triangles >> k & 1) rasterize_stamp<F>(fixed[f + k], planes[k], stamps, k, rect, tile, scene);
-                    else rasterize_small<F>(fixed[f + k], planes[k], narrow >> k & 1, rect, tile, scene);
-                }
+                rasterize_run<F>({fixed.data() + f, n}, planes, narrow, stamps, rect, tile, scene);
                 f += n;
             }
             if (next_other == kEnd) break;

@@ -115,14 +115,15 @@ std::uint64_t Mask(const Edges& t, int k) {
     return covered & row_bits * 0x0101010101010101u & rows;
 }
 
-std::uint32_t StampMasks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks) {
+Stamped StampMasks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks) {
     Edges edges;
-    const std::uint32_t stamps = SetUp(batch, grid, edges) & narrow;
-    for (std::uint32_t left = stamps; left != 0; left &= left - 1) {
+    Stamped stamped{SetUp(batch, grid, edges) & narrow, 0};
+    for (std::uint32_t left = stamped.triangles; left != 0; left &= left - 1) {
         const int k = std::countr_zero(left);
         masks[k] = Mask(edges, k);
+        stamped.samples += static_cast<std::uint32_t>(edges.width[k] * edges.rows[k]);
     }
-    return stamps;
+    return stamped;
 }
 
 }  // namespace rast::fast::detail::HWY_NAMESPACE
@@ -133,8 +134,7 @@ namespace rast::fast::detail {
 
 HWY_EXPORT(StampMasks);
 
-std::uint32_t stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid,
-                          std::uint64_t* masks) {
+Stamped stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks) {
     return HWY_DYNAMIC_DISPATCH(StampMasks)(batch, narrow, grid, masks);
 }
 

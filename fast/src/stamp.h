@@ -21,13 +21,20 @@ struct StampGrid {
     std::int32_t sx, sy;
 };
 
+// The triangles stamp_masks answered, bit k for batch entry k, and how many samples their blocks have in
+// all (at one sample index).
+struct Stamped {
+    std::uint32_t triangles;
+    std::uint32_t samples;
+};
+
 // For the triangles of `batch` (planes.h: counter-clockwise corners in grid units and pixel boxes)
 // whose bit is set in `narrow` (narrow_edges, setup.h: their edge functions fit in 32 bits over their
 // boxes): those whose block, their box within the tile, is at most kStampSide pixels each way and
-// kScalarSamples pixels in all (the blocks the scalar depth test takes, scalar.h) are answered as bits, and their masks[k] set: bit kStampSide r + c for the sample of pixel (i + c, j + r),
-// (i, j) the block's first pixel, inside the triangle by the integer edge functions and the tie rule of
-// docs/design.md (E >= 0 on an owning edge, E > 0 on the others), for c and r within the block.
-std::uint32_t stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid,
-                          std::uint64_t* masks);
+// kScalarSamples pixels in all (the blocks the scalar depth test takes, scalar.h) are answered, and their
+// masks[k] set: bit kStampSide r + c for the sample of pixel (i + c, j + r), (i, j) the block's first
+// pixel, inside the triangle by the integer edge functions and the tie rule of docs/design.md (E >= 0 on
+// an owning edge, E > 0 on the others), for c and r within the block.
+Stamped stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks);
 
 }  // namespace rast::fast::detail

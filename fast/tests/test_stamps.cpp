@@ -1,7 +1,7 @@
 // stamp_masks (stamp.h) against the scalar definition of a block's coverage, fixed_edges then
 // fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: which
 // triangles of a run get stamps (narrow, and their block within the tile at most 8 x 8 and 16 pixels), and for
-// those, every sample of every row, for each fixed mode and sample count. Corners on sample positions
+// those, every sample of every row, and their blocks' samples in all, for each fixed mode and sample count. Corners on sample positions
 // and level edges put samples exactly on edges, where only the tie rule decides; triangles straddle the
 // tile's sides, and blocks from 1 x 9 to 9 x 9 pixels sit either side of the stamp's limits.
 #include "compose.h"
@@ -71,6 +71,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                         const std::uint32_t narrow = small_planes(run, c, planes, batch);
                         StampMasks stamps;
                         if (narrow != 0) stamps.find(batch, narrow, rect, c);  // as render_tile calls it
+                        std::size_t block_samples = 0;
                         for (std::size_t k = 0; k < run.size(); ++k) {
                             const SmallFixed& t = run[k];
                             const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
@@ -84,6 +85,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                                 continue;
                             }
                             ++stamped;
+                            block_samples += static_cast<std::size_t>((i1 - i0 + 1) * (j1 - j0 + 1) * samples);
                             const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
                             for (int s = 0; s < samples; ++s) {
                                 const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
@@ -107,6 +109,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                                 }
                             }
                         }
+                        ASSERT_EQ(stamps.samples, block_samples) << "trial " << trial;
                     }
                 }
         hwy::SetSupportedTargetsForTest(0);
