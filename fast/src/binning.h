@@ -42,15 +42,22 @@ struct Chunk {
 };
 
 // Appends to a tile's bin. The bins are written at as many places as there are tiles, each cache line
-// for the first time: the line that will hold the end of the bin's next record (it starts where this one
-// ended) is fetched now, for writing, rather than when that record comes (binning small triangles spent
-// twice its share of instructions in time). An address, not a pointer: it may lie past the bin's
-// storage, and a prefetch never faults.
+// for the first time: the lines of the record kAppendAhead places after this one (its first and last
+// byte: a record may straddle two) are fetched now, for writing, rather than when that record comes.
+// Binning small triangles spent twice its share of instructions in time; fetching the next record's
+// last line only missed the line a record starts every 64 / gcd(64, size) records, and came too late
+// to hide the writes (a tiny triangle's binning 4% faster three records ahead). An address, not a
+// pointer: it may lie past the bin's storage, and a prefetch never faults.
+inline constexpr std::size_t kAppendAhead = 3;
+inline constexpr std::uintptr_t kCacheLine = 64;
+
 template <class Record>
 void append(std::vector<Record>& bin, const Record& record) {
     bin.push_back(record);
-    const std::uintptr_t next_end = reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + sizeof(Record) - 1;
-    __builtin_prefetch(reinterpret_cast<const void*>(next_end), 1);
+    const std::uintptr_t ahead =
+        reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + (kAppendAhead - 1) * sizeof(Record);
+    __builtin_prefetch(reinterpret_cast<const void*>(ahead), 1);
+    __builtin_prefetch(reinterpret_cast<const void*>(ahead + sizeof(Record) - 1), 1);
 }
 
 // What place_small_batch needs of the context.
@@ -145,6 +152,13 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         SmallFixed decided[kPlaceBatch];  // the undecided lanes that place_small_fixed found small
         for (std::size_t id = begin; id != end;) {
             const int n = static_cast<int>(std::min<std::size_t>(kPlaceBatch, end - id));
+            // The batch's gathers do not train the hardware's prefetcher the way a stream of loads does:
+            // the triangles of the batch four ahead are fetched now (tiny triangles' rendering 8-10%
+            // faster; two to sixteen batches ahead alike).
+            const std::uintptr_t later = reinterpret_cast<std::uintptr_t>(scene.triangles.data() + id) +
+                                         4 * kPlaceBatch * sizeof(Triangle);  // an address: it may lie past the end
+            for (std::uintptr_t byte = 0; byte < kPlaceBatch * sizeof(Triangle); byte += kCacheLine)
+                __builtin_prefetch(reinterpret_cast<const void*>(later + byte));
             place_small_batch(&scene.triangles[id], n, grid, batch);
             std::uint32_t small = batch.small, general = batch.general;
             for (std::uint32_t lanes = batch.undecided; lanes != 0; lanes &= lanes - 1) {

@@ -41,9 +41,8 @@ namespace rast::fast::detail {
 // triangle ahead: the setups of a tile's triangles are scattered over the chunk, and each was a cache
 // miss on first touch.
 inline void prefetch(const Setup& s) {
-    constexpr std::uintptr_t kLine = 64;
-    const auto line_of = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) & ~(kLine - 1); };
-    for (std::uintptr_t line = line_of(&s); line <= line_of(&s.classify_tiles); line += kLine)
+    const auto line_of = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) & ~(kCacheLine - 1); };
+    for (std::uintptr_t line = line_of(&s); line <= line_of(&s.classify_tiles); line += kCacheLine)
         __builtin_prefetch(reinterpret_cast<const void*>(line));
 }
 
