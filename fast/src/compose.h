@@ -206,7 +206,7 @@ struct StampMasks {
 
 // depth_rows_scalar (scalar.h) for a stamp's coverage, bit kStampSide r + c for column c of row r: one
 // loop over the mask's bits, not one per row (a tiny triangle's stamp has two or three samples on as
-// many rows). The same operations sample by sample, so the same result.
+// many rows). The same test sample by sample (depth_sample), so the same result.
 template <bool kPerSample>
 [[gnu::always_inline]] inline bool depth_stamp(const Block& b, std::uint64_t mask, const DepthPlane& p,
                                                DepthRows rows, std::uint64_t* undecided) {
@@ -214,17 +214,8 @@ template <bool kPerSample>
     for (; mask != 0; mask &= mask - 1) {
         const int k = std::countr_zero(mask), r = k / kStampSide, col = k % kStampSide;
         const double px = double(b.i0 + col) + b.sx, py = double(b.j0 + r) + b.sy;
-        const double z = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
-        const std::ptrdiff_t at = r * rows.stride + col;
-        const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
-        const double gap = stored - z, margin = p.err + stored_err;
-        if (gap > margin) {
-            rows.z[at] = z;
-            if constexpr (kPerSample) rows.err[at] = p.err;
-            rows.ids[at] = p.id;
-        } else if (!(gap < -margin)) {
+        if (depth_sample<kPerSample>(p, rows, r * rows.stride + col, px, p.b * (py - p.y0)))
             open |= std::uint64_t{1} << k;
-        }
     }
     if (open == 0) return false;
     for (int r = 0; r < b.rows; ++r) undecided[r] = open >> (kStampSide * r) & first_bits(kStampSide);

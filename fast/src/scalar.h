@@ -56,8 +56,25 @@ inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
     return 0;
 }
 
-// depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r); kPerSample:
-// whether rows.err holds the stored depths' bounds.
+// The z-buffer test of depth_block (kernels.h) at one sample, slot `at` of rows, its x px and the plane's
+// row term b_dy = b (py - y0): the same operations as the kernels' lanes. kPerSample: whether rows.err
+// holds the stored depths' bounds. Answers whether the sample is left undecided.
+template <bool kPerSample>
+[[gnu::always_inline]] inline bool depth_sample(const DepthPlane& p, DepthRows rows, std::ptrdiff_t at, double px,
+                                                double b_dy) {
+    const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
+    const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
+    const double gap = stored - z, margin = p.err + stored_err;
+    if (gap > margin) {
+        rows.z[at] = z;
+        if constexpr (kPerSample) rows.err[at] = p.err;
+        rows.ids[at] = p.id;
+        return false;
+    }
+    return !(gap < -margin);
+}
+
+// depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r).
 template <bool kPerSample, class RowMask>
 [[gnu::always_inline]] inline bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p,
                                                      DepthRows rows, std::uint64_t* undecided) {
@@ -69,17 +86,7 @@ template <bool kPerSample, class RowMask>
         for (std::uint64_t m = row_mask(r); m != 0; m &= m - 1) {
             const int k = std::countr_zero(m);
             const double px = double(b.i0 + k) + b.sx;
-            const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
-            const std::ptrdiff_t at = r * rows.stride + k;
-            const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
-            const double gap = stored - z, margin = p.err + stored_err;
-            if (gap > margin) {
-                rows.z[at] = z;
-                if constexpr (kPerSample) rows.err[at] = p.err;
-                rows.ids[at] = p.id;
-            } else if (!(gap < -margin)) {
-                open |= std::uint64_t{1} << k;
-            }
+            if (depth_sample<kPerSample>(p, rows, r * rows.stride + k, px, b_dy)) open |= std::uint64_t{1} << k;
         }
         undecided[r] = open;
         any = any || open != 0;
