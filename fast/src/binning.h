@@ -41,23 +41,29 @@ struct Chunk {
     std::vector<std::vector<BigEntry>> big_bins;
 };
 
-// Appends to a tile's bin. The bins are written at as many places as there are tiles, each cache line
-// for the first time: the lines of the record kAppendAhead places after this one (its first and last
-// byte: a record may straddle two) are fetched now, for writing, rather than when that record comes.
-// Binning small triangles spent twice its share of instructions in time; fetching the next record's
-// last line only missed the line a record starts every 64 / gcd(64, size) records, and came too late
-// to hide the writes (a tiny triangle's binning 4% faster three records ahead). An address, not a
-// pointer: it may lie past the bin's storage, and a prefetch never faults.
-inline constexpr std::size_t kAppendAhead = 3;
 inline constexpr std::uintptr_t kCacheLine = 64;
+
+// Starts loading every cache line of the bytes [address, address + size), for writing if kWrite. An
+// address, not a pointer: it may lie past an array's end, and a prefetch never faults.
+template <bool kWrite = false>
+void prefetch_bytes(std::uintptr_t address, std::size_t size) {
+    for (std::uintptr_t line = address & ~(kCacheLine - 1); line < address + size; line += kCacheLine)
+        __builtin_prefetch(reinterpret_cast<const void*>(line), kWrite);
+}
+
+// Appends to a tile's bin. The bins are written at as many places as there are tiles, each cache line
+// for the first time: the lines of the record kAppendAhead places after this one are fetched now, for
+// writing, rather than when that record comes. Binning small triangles spent twice its share of
+// instructions in time; fetching the next record's last line only missed the line a record starts every
+// 64 / gcd(64, size) records, and came too late to hide the writes (a tiny triangle's binning 4% faster
+// three records ahead).
+inline constexpr std::size_t kAppendAhead = 3;
 
 template <class Record>
 void append(std::vector<Record>& bin, const Record& record) {
     bin.push_back(record);
-    const std::uintptr_t ahead =
-        reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + (kAppendAhead - 1) * sizeof(Record);
-    __builtin_prefetch(reinterpret_cast<const void*>(ahead), 1);
-    __builtin_prefetch(reinterpret_cast<const void*>(ahead + sizeof(Record) - 1), 1);
+    prefetch_bytes<true>(reinterpret_cast<std::uintptr_t>(bin.data() + bin.size()) + (kAppendAhead - 1) * sizeof(Record),
+                         sizeof(Record));
 }
 
 // What place_small_batch needs of the context.
@@ -155,10 +161,8 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
             // The batch's gathers do not train the hardware's prefetcher the way a stream of loads does:
             // the triangles of the batch four ahead are fetched now (tiny triangles' rendering 8-10%
             // faster; two to sixteen batches ahead alike).
-            const std::uintptr_t later = reinterpret_cast<std::uintptr_t>(scene.triangles.data() + id) +
-                                         4 * kPlaceBatch * sizeof(Triangle);  // an address: it may lie past the end
-            for (std::uintptr_t byte = 0; byte < kPlaceBatch * sizeof(Triangle); byte += kCacheLine)
-                __builtin_prefetch(reinterpret_cast<const void*>(later + byte));
+            prefetch_bytes(reinterpret_cast<std::uintptr_t>(scene.triangles.data() + id) + 4 * kPlaceBatch * sizeof(Triangle),
+                           kPlaceBatch * sizeof(Triangle));
             place_small_batch(&scene.triangles[id], n, grid, batch);
             std::uint32_t small = batch.small, general = batch.general;
             for (std::uint32_t lanes = batch.undecided; lanes != 0; lanes &= lanes - 1) {

@@ -225,23 +225,34 @@ template <bool kPerSample>
 // The small triangles run[k] (their planes[k]; narrow: bit k for a narrow one) in order: those whose
 // stamps were found (stamps.triangles) test depth on the masks' bits, the others by rasterize_small.
 // The stamps' bookkeeping is done once for the run, before any is composed: their blocks are counted
-// for the far depth, and of their bounds the largest and the smallest admitted, which leaves the tile's
-// bound above each and switches it to a bound per sample if one of them is far from it. Their planes
-// may then carry a larger tile bound than one at a time would: still a bound.
+// for the far depth, and of their finite bounds the largest and the smallest admitted, which leaves the
+// tile's bound above each and switches it to a bound per sample if one of them is far from it (an
+// infinite one is admitted apart: admitted in their place it would raise the tile's bound not at all).
+// Their planes may then carry a larger tile bound than one at a time would: still a bound.
 template <Fault F>
 void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::uint32_t narrow,
                    const StampMasks& stamps, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
     const Context& c = scene.c;
     if (stamps.triangles != 0) {
-        double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+        constexpr double kInfinity = std::numeric_limits<double>::infinity();
+        double smallest = kInfinity, largest = 0;
+        bool unbounded = false;  // a plane whose bound overflowed (narrow_planes makes it +infinity)
         for (std::uint32_t m = stamps.triangles; m != 0; m &= m - 1) {
-            const int k = std::countr_zero(m);
-            smallest = std::min(smallest, planes[k].err);
-            largest = std::max(largest, planes[k].err);
+            const double e = planes[std::countr_zero(m)].err;
+            if (e < kInfinity) {
+                smallest = std::min(smallest, e);
+                largest = std::max(largest, e);
+            } else {
+                unbounded = true;
+            }
         }
         count_block(tile, stamps.samples, rect, c);
-        tile.admit(largest);
-        tile.admit(smallest);
+        // An infinite bound raises no other, but switches a tile that holds depths to a bound per sample.
+        if (unbounded) tile.admit(kInfinity);
+        if (smallest <= largest) {
+            tile.admit(largest);
+            tile.admit(smallest);
+        }
     }
     for (std::size_t k = 0; k < run.size(); ++k) {
         const SmallFixed& t = run[k];

@@ -41,9 +41,8 @@ namespace rast::fast::detail {
 // triangle ahead: the setups of a tile's triangles are scattered over the chunk, and each was a cache
 // miss on first touch.
 inline void prefetch(const Setup& s) {
-    const auto line_of = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) & ~(kCacheLine - 1); };
-    for (std::uintptr_t line = line_of(&s); line <= line_of(&s.classify_tiles); line += kCacheLine)
-        __builtin_prefetch(reinterpret_cast<const void*>(line));
+    const auto address = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p); };
+    prefetch_bytes(address(&s), address(&s.classify_tiles) + sizeof(s.classify_tiles) - address(&s));
 }
 
 template <Fault F>
