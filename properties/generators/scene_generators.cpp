@@ -346,6 +346,30 @@ rc::Gen<Scene> overlapping_triangles() {
     }));
 }
 
+rc::Gen<Scene> stamped_runs() {
+    return scenes_at_full_size(rc::gen::exec([] {
+        const Viewport vp{*rc::gen::inRange(8, 25), *rc::gen::inRange(8, 25)};
+        // Depth magnitudes whose planes' error bounds lie hundreds of orders apart; 1.7e308 overflows them.
+        const double scale = *rc::gen::element(1e-300, 1e-12, 1.0, 1e12, 1e300, 1.7e308);
+        const double cx = *arbitrary(2, vp.width - 2.0), cy = *arbitrary(2, vp.height - 2.0);
+        std::vector<Triangle> triangles;
+        for (int k = *rc::gen::inRange(4, 20); k > 0; --k) {
+            Triangle t;
+            if (!triangles.empty() && *rc::gen::inRange(0, 3) == 0) {
+                // A twin: an earlier triangle from another first corner, the same plane, tied everywhere.
+                t = *rc::gen::elementOf(triangles);
+                std::rotate(t.v.begin(), t.v.begin() + *rc::gen::inRange(1, 3), t.v.end());
+            } else {
+                const double s = *rc::gen::element(scale, 1.0, 1e-12, 1.7e308);
+                for (Vertex& v : t.v)
+                    v = {cx + *arbitrary(-2, 2), cy + *arbitrary(-2, 2), s * *arbitrary(-1, 1)};
+            }
+            triangles.push_back(t);
+        }
+        return scene_of(vp, std::move(triangles));
+    }));
+}
+
 rc::Gen<Scene> layered_triangles() {
     return scenes_at_full_size(rc::gen::exec([] {
         const Viewport vp{*rc::gen::inRange(1, 4), *rc::gen::inRange(1, 4)};

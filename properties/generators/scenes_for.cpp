@@ -11,7 +11,9 @@ rc::Gen<Scene> scenes_for(std::string_view property) {
         return rc::gen::oneOf(triangulated_region(),
                               rc::gen::exec([] { return *triangulated_region_on_grid(*rc::gen::element(4, 8, 16)); }));
     if (property == "order_independence")
-        return rc::gen::weightedOneOf<Scene>({{3, overlapping_triangles()}, {1, any_scene()}});
+        return rc::gen::weightedOneOf<Scene>({{3, overlapping_triangles()}, {1, stamped_runs()}, {1, any_scene()}});
+    if (property == "fixed_matches_reference")
+        return rc::gen::weightedOneOf<Scene>({{3, any_scene()}, {1, stamped_runs()}});
     if (property == "conforms")
         return rc::gen::oneOf(any_scene(), overlapping_triangles(), triangulated_region());
     if (property == "float_within_bound") return rc::gen::oneOf(any_scene(), long_rows());

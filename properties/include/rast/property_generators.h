@@ -59,6 +59,11 @@ rc::Gen<Scene> triangulated_region_on_grid(int bits);
 // planes; often sharing vertices, always with depth ties somewhere likely.
 rc::Gen<Scene> overlapping_triangles();
 
+// Runs of pixel-sized triangles packed into a few pixels, as the fast path composes them a run of stamps
+// at a time (fast/src/compose.h): twins of earlier ones (tied everywhere) among depths from 1e-300 to
+// 1.7e308, whose planes' error bounds lie hundreds of orders apart or overflow.
+rc::Gen<Scene> stamped_runs();
+
 // Layers: large triangles over the whole viewport on crossing planes (dyadic, so ties are exact), with a
 // few small triangles among them, on the same planes or their own.
 rc::Gen<Scene> layered_triangles();
