@@ -55,7 +55,7 @@ void prefetch_bytes(std::uintptr_t address, std::size_t size) {
 // for the first time: the lines of the record kAppendAhead places after this one are fetched now, for
 // writing, rather than when that record comes. Binning small triangles spent twice its share of
 // instructions in time; fetching the next record's last line only missed the line a record starts every
-// 64 / gcd(64, size) records, and came too late to hide the writes (a tiny triangle's binning 4% faster
+// 64 / gcd(64, size) records, and came too late to hide the writes (tiny triangles' rendering 4% faster
 // three records ahead).
 inline constexpr std::size_t kAppendAhead = 3;
 
