@@ -264,12 +264,13 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
         const TileRect box = box_in(t, rect);
         if (behind_tile(pl, c, tile, box.i0, box.i1, box.j0, box.j1)) continue;
         const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, t.id};
+        const auto depth = [&](const Block& b, int s, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
+            return with_stored_bounds(rows, [&](auto per_sample) {
+                return depth_stamp<per_sample>(b, stamps.masks[s][k], p, rows, undecided);
+            });
+        };
         compose_blocks<F>([&] { return placed_of(t, c).v; }, plane, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
-                          [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
-                              return with_stored_bounds(rows, [&](auto per_sample) {
-                                  return depth_stamp<per_sample>(b, stamps.masks[s][k], plane, rows, undecided);
-                              });
-                          });
+                          depth);
     }
 }
 

@@ -26,10 +26,11 @@ struct PlaceGrid {
 // kPlaceBatch triangles placed, one array per field, each lane what place_small_fixed<Fault::none> makes
 // of its triangle: the lane's bit in exactly one of the four masks, and where it is in `small`, the
 // fields of its SmallFixed but the id (its corners counter-clockwise in grid units, their depths, its
-// pixel bounding box, and in `narrow` whether its edge functions fit in 32 bits, narrow_edges). The small and culled lanes' coordinates are finite; a triangle with a depth that
-// is not finite is general. `undecided`: the lanes whose coordinate differences make products of 2^53 or
-// more (far ends of a triangle clipped to a small box), whose orientation doubles cannot decide
-// exactly; place_small_fixed decides them, and may find them small, culled or general.
+// pixel bounding box, and in `narrow` whether its edge functions fit in 32 bits, narrow_edges). The
+// small and culled lanes' coordinates are finite; a triangle with a depth that is not finite is general.
+// `undecided`: the lanes whose coordinate differences make products of 2^53 or more (far ends of a
+// triangle clipped to a small box), whose orientation doubles cannot decide exactly; place_small_fixed
+// decides them, and may find them small, culled or general.
 struct PlacedBatch {
     double z[3][kPlaceBatch];
     std::int32_t x[3][kPlaceBatch], y[3][kPlaceBatch];
