@@ -39,7 +39,7 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
         const double px = double(b.i0 + k) + b.sx;
         const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
         const std::size_t slot = at + k;
-        const std::int64_t other = tile.ids[slot];
+        const std::int32_t other = tile.ids[slot];
         bool replace = other < 0;
         if (!replace) {
             if constexpr (F == Fault::depth_less_equal) {

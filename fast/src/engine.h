@@ -103,17 +103,17 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
     }
     for (int j = rect.j0; j <= rect.j1; ++j)
         for (int s = 0; s < samples; ++s) {
-            const std::int64_t* ids = tile.ids.data() + tile.at(s, j - rect.j0, 0);
+            const std::int32_t* ids = tile.ids.data() + tile.at(s, j - rect.j0, 0);
             const double* z = tile.z.data() + tile.at(s, j - rect.j0, 0);
             std::int32_t* to_ids = fb.ids.data() + fb.index(rect.i0, j, s);
             double* to_depth = fb.depth.data() + fb.index(rect.i0, j, s);
-            if (samples == 1) {  // contiguous on both sides: copies the compiler vectorizes
-                std::transform(ids, ids + width, to_ids, [](std::int64_t id) { return static_cast<std::int32_t>(id); });
+            if (samples == 1) {  // contiguous on both sides
+                std::copy(ids, ids + width, to_ids);
                 std::copy(z, z + width, to_depth);
                 continue;
             }
             for (int k = 0; k < width; ++k) {
-                to_ids[k * samples] = static_cast<std::int32_t>(ids[k]);
+                to_ids[k * samples] = ids[k];
                 to_depth[k * samples] = z[k];
             }
         }

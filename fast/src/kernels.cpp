@@ -38,6 +38,26 @@ HWY_INLINE MD lanes_of(D d, std::uint64_t bits) {
     return hn::LoadMaskBits(d, bytes);
 }
 
+// Depth lanes' ids, 32 bits each.
+using DI32 = hn::Rebind<std::int32_t, D>;
+
+// The lanes of m as DI32's (RebindMask needs lanes of one size): AVX-512's masks are a bit per lane
+// whatever its size; the others' are vectors, whose 64-bit lanes are narrowed; the scalar target's go
+// through their bits.
+HWY_INLINE hn::Mask<DI32> id_lanes(MD m) {
+#if HWY_TARGET <= HWY_AVX3
+    return hn::Mask<DI32>{m.raw};
+#elif HWY_TARGET != HWY_SCALAR
+    const hn::RebindToUnsigned<D> du;
+    const hn::Rebind<std::uint32_t, D> du32;
+    return hn::RebindMask(DI32(), hn::MaskFromVec(hn::TruncateTo(du32, hn::BitCast(du, hn::VecFromMask(D(), m)))));
+#else
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(D(), m, bytes);
+    return hn::LoadMaskBits(DI32(), bytes);
+#endif
+}
+
 // Each evaluator is told the row (start_row, rows in order from 0), then asked for the lanes from k = 0
 // upwards in steps of Lanes(D) (chunk), px being the lanes' sample x, i + sx.
 struct All {
@@ -174,13 +194,13 @@ struct DepthLanes {
     explicit DepthLanes(const DepthPlane& p)
         : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), b(hn::Set(D(), p.b)),
           y0(hn::Set(D(), p.y0)), e(hn::Set(D(), p.err)), margin(hn::Set(D(), p.err + p.stored_err)),
-          id(hn::Set(DI(), p.id)) {}
+          id(hn::Set(DI32(), p.id)) {}
     // b (py - y0), the scalar definition's, lane by lane: a row's term of the plane.
     HWY_INLINE VD b_dy(VD py) const { return hn::Mul(b, hn::Sub(py, y0)); }
     // The row at offset `row` of the rows: z, its bounds (read only when kPerSample) and ids.
     struct Row {
         double *z, *err;
-        std::int64_t* ids;
+        std::int32_t* ids;
     };
     static Row row_of(DepthRows rows, std::ptrdiff_t row) {
         double* z = rows.z + row;
@@ -190,7 +210,6 @@ struct DepthLanes {
     // of the row: writes the ones decided nearer, answers the ones left undecided.
     HWY_INLINE MD test(VD px, VD b_dy, MD mask, Row row, int k) const {
         const D d;
-        const DI di;
         const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
         const auto stored = hn::LoadU(d, row.z + k);
         VD both = margin, stored_err = hn::Zero(d);  // the stored bounds, read where rows keeps them
@@ -201,13 +220,13 @@ struct DepthLanes {
         const auto gap = hn::Sub(stored, depth);
         const auto write = hn::And(mask, hn::Gt(gap, both));
         const auto farther = hn::Lt(gap, hn::Neg(both));
-        hn::StoreU(hn::IfThenElse(write, depth, stored), d, row.z + k);
-        if constexpr (kPerSample) hn::StoreU(hn::IfThenElse(write, e, stored_err), d, row.err + k);
-        hn::StoreU(hn::IfThenElse(hn::RebindMask(di, write), id, hn::LoadU(di, row.ids + k)), di, row.ids + k);
+        hn::BlendedStore(depth, write, d, row.z + k);
+        if constexpr (kPerSample) hn::BlendedStore(e, write, d, row.err + k);
+        hn::BlendedStore(id, id_lanes(write), DI32(), row.ids + k);
         return hn::AndNot(hn::Or(write, farther), mask);
     }
     VD z0, a, x0, b, y0, e, margin;  // margin: err + stored_err
-    hn::Vec<DI> id;
+    hn::Vec<DI32> id;
 };
 
 // A sample row meets the triangle in one run of samples: along the row each edge's value is monotone

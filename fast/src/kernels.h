@@ -51,18 +51,19 @@ struct Coverage {
 // proves (Plane, setup.h).
 struct DepthPlane {
     double z0, a, x0, b, y0, err, stored_err;
-    std::int64_t id;
+    std::int32_t id;
 };
 
 // A tile's z-buffer at the block's first sample, rows `stride` apart: depths, their error bounds (or
-// nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel reads and rewrites (with their own
-// values) up to a vector past the end of a row: the buffers need that much padding. An empty slot
+// nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel reads up to a vector past the end
+// of a row, and stores with masks (rewriting what it read, where the target has no masked stores): the
+// buffers need that much padding. An empty slot
 // (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while the margin
 // (depth_block) is finite (the gap, +infinity, is not beyond an infinite margin: that decides nothing).
 struct DepthRows {
     double* z;
     double* err;
-    std::int64_t* ids;
+    std::int32_t* ids;  // the framebuffer's type: half the bytes of a lane of the depth test's
     std::ptrdiff_t stride;
 };
 

@@ -26,7 +26,7 @@ namespace {
 struct Rows {
     static constexpr std::ptrdiff_t kStride = kRowLanes;
     std::vector<double> z, err;
-    std::vector<std::int64_t> ids;
+    std::vector<std::int32_t> ids;
     bool per_sample = false;
     std::ptrdiff_t origin = 0;
     DepthRows view() {
