@@ -38,23 +38,24 @@ HWY_INLINE MD lanes_of(D d, std::uint64_t bits) {
     return hn::LoadMaskBits(d, bytes);
 }
 
-// Depth lanes' ids, 32 bits each.
-using DI32 = hn::Rebind<std::int32_t, D>;
+// The ids of the depth lanes, 32 bits each.
+using DId = hn::Rebind<std::int32_t, D>;
 
-// The lanes of m as DI32's (RebindMask needs lanes of one size): AVX-512's masks are a bit per lane
-// whatever its size; the others' are vectors, whose 64-bit lanes are narrowed; the scalar target's go
+// The lanes of m as DId's (RebindMask needs lanes of one size): AVX-512's masks are a bit per lane
+// whatever its size; the others' are vectors, whose 64-bit lanes are narrowed (on a fixed-size vector:
+// a scalable target's narrowed mask would also cover the lanes past DId's); the scalar target's go
 // through their bits.
-HWY_INLINE hn::Mask<DI32> id_lanes(MD m) {
+HWY_INLINE hn::Mask<DId> id_lanes(MD m) {
 #if HWY_TARGET <= HWY_AVX3
-    return hn::Mask<DI32>{m.raw};
+    return hn::Mask<DId>{m.raw};
 #elif HWY_TARGET != HWY_SCALAR
     const hn::RebindToUnsigned<D> du;
     const hn::Rebind<std::uint32_t, D> du32;
-    return hn::RebindMask(DI32(), hn::MaskFromVec(hn::TruncateTo(du32, hn::BitCast(du, hn::VecFromMask(D(), m)))));
+    return hn::RebindMask(DId(), hn::MaskFromVec(hn::TruncateTo(du32, hn::BitCast(du, hn::VecFromMask(D(), m)))));
 #else
     std::uint8_t bytes[8] = {};
     hn::StoreMaskBits(D(), m, bytes);
-    return hn::LoadMaskBits(DI32(), bytes);
+    return hn::LoadMaskBits(DId(), bytes);
 #endif
 }
 
@@ -194,7 +195,7 @@ struct DepthLanes {
     explicit DepthLanes(const DepthPlane& p)
         : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), b(hn::Set(D(), p.b)),
           y0(hn::Set(D(), p.y0)), e(hn::Set(D(), p.err)), margin(hn::Set(D(), p.err + p.stored_err)),
-          id(hn::Set(DI32(), p.id)) {}
+          id(hn::Set(DId(), p.id)) {}
     // b (py - y0), the scalar definition's, lane by lane: a row's term of the plane.
     HWY_INLINE VD b_dy(VD py) const { return hn::Mul(b, hn::Sub(py, y0)); }
     // The row at offset `row` of the rows: z, its bounds (read only when kPerSample) and ids.
@@ -222,11 +223,11 @@ struct DepthLanes {
         const auto farther = hn::Lt(gap, hn::Neg(both));
         hn::BlendedStore(depth, write, d, row.z + k);
         if constexpr (kPerSample) hn::BlendedStore(e, write, d, row.err + k);
-        hn::BlendedStore(id, id_lanes(write), DI32(), row.ids + k);
+        hn::BlendedStore(id, id_lanes(write), DId(), row.ids + k);
         return hn::AndNot(hn::Or(write, farther), mask);
     }
     VD z0, a, x0, b, y0, e, margin;  // margin: err + stored_err
-    hn::Vec<DI32> id;
+    hn::Vec<DId> id;
 };
 
 // A sample row meets the triangle in one run of samples: along the row each edge's value is monotone

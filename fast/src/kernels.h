@@ -55,11 +55,10 @@ struct DepthPlane {
 };
 
 // A tile's z-buffer at the block's first sample, rows `stride` apart: depths, their error bounds (or
-// nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel reads up to a vector past the end
-// of a row, and stores with masks (rewriting what it read, where the target has no masked stores): the
-// buffers need that much padding. An empty slot
-// (id < 0) holds z = +infinity, so that every finite depth is decided nearer than it while the margin
-// (depth_block) is finite (the gap, +infinity, is not beyond an infinite margin: that decides nothing).
+// nullptr: DepthPlane::stored_err bounds them all) and ids. The kernel loads up to a vector past the end
+// of a row (its stores are masked): the buffers need that much padding. An empty slot (id < 0) holds
+// z = +infinity, so that every finite depth is decided nearer than it while the margin (depth_block) is
+// finite (the gap, +infinity, is not beyond an infinite margin: that decides nothing).
 struct DepthRows {
     double* z;
     double* err;
