@@ -156,25 +156,39 @@ inline TileRect box_in(const SmallFixed& t, const TileRect& rect) {
     return {std::max(rect.i0, t.i_lo), std::min(rect.i1, t.i_hi), std::max(rect.j0, t.j_lo), std::min(rect.j1, t.j_hi)};
 }
 
+// Lane k of a stamp setup's edges, in depth_small's form.
+inline SmallEdges small_edges(const StampEdges& set_up, int k) {
+    SmallEdges out;
+    for (int e = 0; e < 3; ++e) {
+        out.e[e] = set_up.e[e][k];
+        out.dx[e] = set_up.dx[e][k];
+        out.dy[e] = set_up.dy[e][k];
+    }
+    return out;
+}
+
 // A small triangle of the 64-bit fixed path, straight from its binned record and its plane: its edges
-// are all else it needs, and a narrow one's edges fit the 32-bit lanes of depth_small.
+// are all else it needs, and a narrow one's edges fit the 32-bit lanes of depth_small. set_up: a narrow
+// one's edges at each sample index, lane `lane` of its run's stamp setup (StampMasks), which computed them
+// for the batch in SIMD (the same values: stamp.h); or nullptr, and they are found here.
 template <Fault F>
-void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const TileRect& rect, TileBuffer& tile,
-                     const SceneView& scene) {
+void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const StampEdges* set_up, int lane,
+                     const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
     const Context& c = scene.c;
-    const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
+    const auto edges = [&] { return fixed_edges<F>(t.x, t.y); };
     const TileRect box = box_in(t, rect);
     rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
                             if (b.width * b.rows <= kScalarSamples)
-                                return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
+                                return fixed_block_depth(edges(), c, b, s, plane, rows, undecided);
                             if (!narrow) {
                                 std::uint64_t masks[kTile];
-                                fixed_row_masks(edges, c, b, s, masks);
+                                fixed_row_masks(edges(), c, b, s, masks);
                                 return depth_runs(b, masks, plane, rows, undecided);
                             }
+                            if (set_up) return depth_small(b, small_edges(set_up[s], lane), plane, rows, undecided);
                             std::int64_t e[3], dx[3], dy[3];
-                            fixed_edges_at(edges, c, b, s, e, dx, dy);
+                            fixed_edges_at(edges(), c, b, s, e, dx, dy);
                             SmallEdges narrow;
                             for (int k = 0; k < 3; ++k) {
                                 narrow.e[k] = static_cast<std::int32_t>(e[k]);
@@ -188,19 +202,24 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const Ti
 // The largest sample count (sample_pattern, rast/scene.h).
 inline constexpr int kMaxSamples = 16;
 
-// The stamps of a run of small triangles in a tile (stamp.h), for every sample index.
+// The stamps of a run of small triangles in a tile (stamp.h), for every sample index, and the edges of
+// the run's blocks they were found from.
 struct StampMasks {
     std::uint32_t triangles = 0;  // bit k: run[k] has stamps
     std::size_t samples = 0;      // their blocks' samples, at every sample index
+    bool set_up = false;          // whether find() ran: edges holds the run's
     std::uint64_t masks[kMaxSamples][kPlaneBatch];
+    StampEdges edges[kMaxSamples];
     void find(const PlaneBatch& batch, std::uint32_t narrow, const TileRect& rect, const Context& c) {
         for (std::size_t s = 0; s < c.offsets.size(); ++s) {
             const StampGrid grid{rect.i0, rect.i1, rect.j0, rect.j1, c.bits, static_cast<std::int32_t>(c.sx[s]),
                                  static_cast<std::int32_t>(c.sy[s])};
-            const Stamped stamped = stamp_masks(batch, narrow, grid, masks[s]);  // the same blocks at every index
+            // The same blocks at every index.
+            const Stamped stamped = stamp_masks(batch, narrow, grid, edges[s], masks[s]);
             triangles = stamped.triangles;
             samples = stamped.samples * c.offsets.size();
         }
+        set_up = true;
     }
 };
 
@@ -258,7 +277,8 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
         const SmallFixed& t = run[k];
         const Plane& pl = planes[k];
         if (!(stamps.triangles >> k & 1)) {
-            rasterize_small<F>(t, pl, narrow >> k & 1, rect, tile, scene);
+            rasterize_small<F>(t, pl, narrow >> k & 1, stamps.set_up ? stamps.edges : nullptr, static_cast<int>(k),
+                               rect, tile, scene);
             continue;
         }
         const TileRect box = box_in(t, rect);

@@ -21,18 +21,11 @@ namespace hn = hwy::HWY_NAMESPACE;
 using DT = hn::CappedTag<std::int32_t, kPlaneBatch>;
 using DS = hn::ScalableTag<std::int32_t>;
 
-// The edge functions of one triangle's block: E at the block's first sample, its steps per column and
-// row, and the block's size.
-struct Edges {
-    std::int32_t e[3][kPlaneBatch], dx[3][kPlaneBatch], dy[3][kPlaneBatch];
-    std::int32_t width[kPlaneBatch], rows[kPlaneBatch];
-};
-
 // fixed_edges then fixed_edges_at (setup.h, coverage.h) for every lane: edge k runs from corner k to
 // corner k + 1; E = a (X - ax) + b (Y - ay) - bias at the block's first sample (X, Y), with a = ay - by,
 // b = bx - ax, and bias 0 on an owning edge (owns_ties), 1 on the others. Answers the lanes whose block
 // fits a stamp.
-std::uint32_t SetUp(const PlaneBatch& t, const StampGrid& g, Edges& out) {
+std::uint32_t SetUp(const PlaneBatch& t, const StampGrid& g, StampEdges& out) {
     const DT d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto past_side = hn::Set(d, kStampSide + 1), one = hn::Set(d, 1);
@@ -72,7 +65,7 @@ std::uint32_t SetUp(const PlaneBatch& t, const StampGrid& g, Edges& out) {
 
 // The mask of triangle k: its edges over the stamp's samples, position p = kStampSide r + c in lane
 // order, as many vectors as its rows take.
-std::uint64_t Mask(const Edges& t, int k) {
+std::uint64_t Mask(const StampEdges& t, int k) {
     const DS d;
     constexpr int kSide = kStampSide;
     const int lanes = static_cast<int>(hn::Lanes(d));
@@ -115,8 +108,8 @@ std::uint64_t Mask(const Edges& t, int k) {
     return covered & row_bits * 0x0101010101010101u & rows;
 }
 
-Stamped StampMasks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks) {
-    Edges edges;
+Stamped StampMasks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, StampEdges& edges,
+                   std::uint64_t* masks) {
     Stamped stamped{SetUp(batch, grid, edges) & narrow, 0};
     for (std::uint32_t left = stamped.triangles; left != 0; left &= left - 1) {
         const int k = std::countr_zero(left);
@@ -134,8 +127,9 @@ namespace rast::fast::detail {
 
 HWY_EXPORT(StampMasks);
 
-Stamped stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks) {
-    return HWY_DYNAMIC_DISPATCH(StampMasks)(batch, narrow, grid, masks);
+Stamped stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, StampEdges& edges,
+                    std::uint64_t* masks) {
+    return HWY_DYNAMIC_DISPATCH(StampMasks)(batch, narrow, grid, edges, masks);
 }
 
 }  // namespace rast::fast::detail

@@ -21,6 +21,15 @@ struct StampGrid {
     std::int32_t sx, sy;
 };
 
+// The integer edge functions of a batch's blocks (their boxes within the tile) at one sample index, a lane
+// per triangle: edge k runs from corner k to corner k + 1, E at the block's first sample (its tie bias
+// included, as fixed_edges then fixed_edges_at give it: setup.h, coverage.h), and its steps per column
+// and row. A narrow triangle's (narrow_edges, setup.h) are exact; the others' wrap around.
+struct StampEdges {
+    std::int32_t e[3][kPlaneBatch], dx[3][kPlaneBatch], dy[3][kPlaneBatch];
+    std::int32_t width[kPlaneBatch], rows[kPlaneBatch];  // the block's size
+};
+
 // The triangles stamp_masks answered, bit k for batch entry k, and how many samples their blocks have in
 // all (at one sample index).
 struct Stamped {
@@ -28,13 +37,14 @@ struct Stamped {
     std::uint32_t samples;
 };
 
-// For the triangles of `batch` (planes.h: counter-clockwise corners in grid units and pixel boxes)
-// whose bit is set in `narrow` (narrow_edges, setup.h: their edge functions fit in 32 bits over their
-// boxes): those whose block, their box within the tile, is at most kStampSide pixels each way and
-// kScalarSamples pixels in all (the blocks the scalar depth test takes, scalar.h) are answered, and their
-// masks[k] set: bit kStampSide r + c for the sample of pixel (i + c, j + r), (i, j) the block's first
-// pixel, inside the triangle by the integer edge functions and the tie rule of docs/design.md (E >= 0 on
-// an owning edge, E > 0 on the others), for c and r within the block.
-Stamped stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, std::uint64_t* masks);
+// Sets up `edges` for every triangle of `batch` (planes.h: counter-clockwise corners in grid units and
+// pixel boxes). Of those whose bit is set in `narrow` (narrow_edges, setup.h: their edge functions fit in
+// 32 bits over their boxes), answers the ones whose block, their box within the tile, is at most
+// kStampSide pixels each way and kScalarSamples pixels in all (the blocks the scalar depth test takes,
+// scalar.h), and sets their masks[k]: bit kStampSide r + c for the sample of pixel (i + c, j + r), (i, j)
+// the block's first pixel, inside the triangle by the integer edge functions and the tie rule of
+// docs/design.md (E >= 0 on an owning edge, E > 0 on the others), for c and r within the block.
+Stamped stamp_masks(const PlaneBatch& batch, std::uint32_t narrow, const StampGrid& grid, StampEdges& edges,
+                    std::uint64_t* masks);
 
 }  // namespace rast::fast::detail

@@ -1,8 +1,8 @@
 // stamp_masks (stamp.h) against the scalar definition of a block's coverage, fixed_edges then
-// fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: which
-// triangles of a run get stamps (narrow, and their block within the tile at most 8 x 8 and 16 pixels),
-// and for those, every sample of every row and their blocks' samples in all, for each fixed mode and
-// sample count. Corners on sample positions and level edges put samples exactly on edges, where only the
+// fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: every
+// narrow triangle's block and edges, which triangles of a run get stamps (narrow, and their block within
+// the tile at most 8 x 8 and 16 pixels), and for those, every sample of every row and their blocks'
+// samples in all, for each fixed mode and sample count. Corners on sample positions and level edges put samples exactly on edges, where only the
 // tie rule decides; triangles straddle the tile's sides, and blocks from 1 x 9 to 9 x 9 pixels sit either
 // side of the stamp's limits.
 #include "compose.h"
@@ -77,6 +77,23 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                             const SmallFixed& t = run[k];
                             const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
                             const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
+                            const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
+                            // Every narrow triangle's block and its edges at each sample index, as
+                            // rasterize_small takes them for depth_small.
+                            for (int s = 0; s < samples && (narrow >> k & 1); ++s) {
+                                const StampEdges& got = stamps.edges[s];
+                                ASSERT_EQ(got.width[k], i1 - i0 + 1) << "trial " << trial << " triangle " << k;
+                                ASSERT_EQ(got.rows[k], j1 - j0 + 1) << "trial " << trial << " triangle " << k;
+                                const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
+                                std::int64_t e[3], dx[3], dy[3];
+                                fixed_edges_at(edges, c, b, s, e, dx, dy);
+                                const SmallEdges lane = small_edges(got, static_cast<int>(k));
+                                for (int m = 0; m < 3; ++m) {
+                                    ASSERT_EQ(lane.e[m], e[m]) << "trial " << trial << " triangle " << k;
+                                    ASSERT_EQ(lane.dx[m], dx[m]) << "trial " << trial << " triangle " << k;
+                                    ASSERT_EQ(lane.dy[m], dy[m]) << "trial " << trial << " triangle " << k;
+                                }
+                            }
                             const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide &&
                                               (i1 - i0 + 1) * (j1 - j0 + 1) <= kScalarSamples;
                             const bool want = (narrow >> k & 1) && fits;
@@ -87,7 +104,6 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                             }
                             ++stamped;
                             block_samples += static_cast<std::size_t>((i1 - i0 + 1) * (j1 - j0 + 1) * samples);
-                            const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
                             for (int s = 0; s < samples; ++s) {
                                 const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
                                 std::int64_t e[3], dx[3], dy[3];
