@@ -175,27 +175,35 @@ template <Fault F>
 void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const StampEdges* set_up, int lane,
                      const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
     const Context& c = scene.c;
-    const auto edges = [&] { return fixed_edges<F>(t.x, t.y); };
     const TileRect box = box_in(t, rect);
-    rasterize_blocks<F>([&] { return placed_of(t, c).v; }, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
+    const auto corners = [&] { return placed_of(t, c).v; };
+    const bool scalar = (box.i1 - box.i0 + 1) * (box.j1 - box.j0 + 1) <= kScalarSamples;
+    if (narrow && set_up && !scalar) {  // the block is the same at every sample index
+        rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
+                            [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows,
+                                std::uint64_t* undecided) {
+                                return depth_small(b, small_edges(set_up[s], lane), plane, rows, undecided);
+                            });
+        return;
+    }
+    const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
+    rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
                         [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
-                            if (b.width * b.rows <= kScalarSamples)
-                                return fixed_block_depth(edges(), c, b, s, plane, rows, undecided);
+                            if (scalar) return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
                             if (!narrow) {
                                 std::uint64_t masks[kTile];
-                                fixed_row_masks(edges(), c, b, s, masks);
+                                fixed_row_masks(edges, c, b, s, masks);
                                 return depth_runs(b, masks, plane, rows, undecided);
                             }
-                            if (set_up) return depth_small(b, small_edges(set_up[s], lane), plane, rows, undecided);
                             std::int64_t e[3], dx[3], dy[3];
-                            fixed_edges_at(edges(), c, b, s, e, dx, dy);
-                            SmallEdges narrow;
+                            fixed_edges_at(edges, c, b, s, e, dx, dy);
+                            SmallEdges small;
                             for (int k = 0; k < 3; ++k) {
-                                narrow.e[k] = static_cast<std::int32_t>(e[k]);
-                                narrow.dx[k] = static_cast<std::int32_t>(dx[k]);
-                                narrow.dy[k] = static_cast<std::int32_t>(dy[k]);
+                                small.e[k] = static_cast<std::int32_t>(e[k]);
+                                small.dx[k] = static_cast<std::int32_t>(dx[k]);
+                                small.dy[k] = static_cast<std::int32_t>(dy[k]);
                             }
-                            return depth_small(b, narrow, plane, rows, undecided);
+                            return depth_small(b, small, plane, rows, undecided);
                         });
 }
 

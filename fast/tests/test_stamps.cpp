@@ -2,9 +2,9 @@
 // fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: every
 // narrow triangle's block and edges, which triangles of a run get stamps (narrow, and their block within
 // the tile at most 8 x 8 and 16 pixels), and for those, every sample of every row and their blocks'
-// samples in all, for each fixed mode and sample count. Corners on sample positions and level edges put samples exactly on edges, where only the
-// tie rule decides; triangles straddle the tile's sides, and blocks from 1 x 9 to 9 x 9 pixels sit either
-// side of the stamp's limits.
+// samples in all, for each fixed mode and sample count. Corners on sample positions and level edges put
+// samples exactly on edges, where only the tie rule decides; triangles straddle the tile's sides, and
+// blocks from 1 x 9 to 9 x 9 pixels sit either side of the stamp's limits.
 #include "compose.h"
 
 #include <gtest/gtest.h>
