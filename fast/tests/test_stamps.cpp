@@ -77,37 +77,33 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                             const SmallFixed& t = run[k];
                             const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
                             const int j0 = std::max(rect.j0, t.j_lo), j1 = std::min(rect.j1, t.j_hi);
+                            const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide &&
+                                              (i1 - i0 + 1) * (j1 - j0 + 1) <= kScalarSamples;
+                            const bool want = (narrow >> k & 1) && fits;
+                            ASSERT_EQ((stamps.triangles >> k & 1) != 0, want) << "trial " << trial << " triangle " << k;
+                            if (want) {
+                                ++stamped;
+                                block_samples += static_cast<std::size_t>((i1 - i0 + 1) * (j1 - j0 + 1) * samples);
+                            } else {
+                                ++refused;
+                            }
                             const std::array<FixedEdge, 3> edges = fixed_edges<Fault::none>(t.x, t.y);
-                            // Every narrow triangle's block and its edges at each sample index, as
-                            // rasterize_small takes them for depth_small.
                             for (int s = 0; s < samples && (narrow >> k & 1); ++s) {
-                                const StampEdges& got = stamps.edges[s];
-                                ASSERT_EQ(got.width[k], i1 - i0 + 1) << "trial " << trial << " triangle " << k;
-                                ASSERT_EQ(got.rows[k], j1 - j0 + 1) << "trial " << trial << " triangle " << k;
                                 const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
                                 std::int64_t e[3], dx[3], dy[3];
                                 fixed_edges_at(edges, c, b, s, e, dx, dy);
-                                const SmallEdges lane = small_edges(got, static_cast<int>(k));
+                                // Every narrow triangle's block and its edges, as rasterize_small takes
+                                // them for depth_small.
+                                const StampEdges& set_up = stamps.edges[s];
+                                ASSERT_EQ(set_up.width[k], b.width) << "trial " << trial << " triangle " << k;
+                                ASSERT_EQ(set_up.rows[k], b.rows) << "trial " << trial << " triangle " << k;
+                                const SmallEdges lane = small_edges(set_up, static_cast<int>(k));
                                 for (int m = 0; m < 3; ++m) {
                                     ASSERT_EQ(lane.e[m], e[m]) << "trial " << trial << " triangle " << k;
                                     ASSERT_EQ(lane.dx[m], dx[m]) << "trial " << trial << " triangle " << k;
                                     ASSERT_EQ(lane.dy[m], dy[m]) << "trial " << trial << " triangle " << k;
                                 }
-                            }
-                            const bool fits = i1 - i0 < kStampSide && j1 - j0 < kStampSide &&
-                                              (i1 - i0 + 1) * (j1 - j0 + 1) <= kScalarSamples;
-                            const bool want = (narrow >> k & 1) && fits;
-                            ASSERT_EQ((stamps.triangles >> k & 1) != 0, want) << "trial " << trial << " triangle " << k;
-                            if (!want) {
-                                ++refused;
-                                continue;
-                            }
-                            ++stamped;
-                            block_samples += static_cast<std::size_t>((i1 - i0 + 1) * (j1 - j0 + 1) * samples);
-                            for (int s = 0; s < samples; ++s) {
-                                const Block b{i0, j0, i1 - i0 + 1, j1 - j0 + 1, c.offsets[s].x, c.offsets[s].y};
-                                std::int64_t e[3], dx[3], dy[3];
-                                fixed_edges_at(edges, c, b, s, e, dx, dy);
+                                if (!want) continue;
                                 const std::uint64_t mask = stamps.masks[s][k];
                                 for (int r = 0; r < kStampSide; ++r) {
                                     const std::uint64_t got = mask >> (kStampSide * r) & first_bits(kStampSide);
