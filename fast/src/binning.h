@@ -1,5 +1,6 @@
 // Binning, one stage of the fast path (engine.h): each triangle of a contiguous id range placed, set up
-// where it is big, and appended to the bins of the screen tiles its bounding box reaches, in id order.
+// where it is big, and appended to the bins of the screen tiles its bounding box reaches, in id order
+// (the occluders nearest first: bin_occluders).
 #pragma once
 
 #include "place_batch.h"
@@ -14,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace rast::fast::detail {
@@ -32,14 +34,25 @@ struct BigEntry {
     std::uint32_t setup;  // index into Chunk::big
 };
 
-// The triangles of one contiguous id range, binned per tile in id order.
+// The triangles of one contiguous id range, binned per tile in id order, the occluders nearest first.
 struct Chunk {
     std::optional<std::size_t> non_finite;  // the first triangle with a non-finite coordinate: binning stopped there
     std::vector<Setup> big;
     std::vector<std::vector<SmallFixed>> fixed_bins;
     std::vector<std::vector<SmallTriangle>> small_bins;
     std::vector<std::vector<BigEntry>> big_bins;
+    std::vector<std::vector<BigEntry>> occluder_bins;
+    // The occluders, by their nearest corner's depth, then id (bin_occluders); kept for its storage.
+    std::vector<std::tuple<double, std::int32_t, std::uint32_t>> occluders;
 };
+
+// An occluder: a triangle of a tile's area or more, which with a few like it covers a tile. (Taking
+// boxes of two tiles each way instead let long thin triangles in, which cover little.)
+inline bool is_occluder(const Placed& p) {
+    const Corners& v = p.v;  // counter-clockwise
+    const double twice_area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    return twice_area >= 2.0 * kTile * kTile;
+}
 
 inline constexpr std::uintptr_t kCacheLine = 64;
 
@@ -94,19 +107,31 @@ inline SmallFixed small_fixed_of(const PlacedBatch& b, int k, std::int32_t id) {
     return s;
 }
 
+// The screen tile of a pixel index inside the viewport, which is not negative: unsigned division is a
+// shift.
+inline int tile_of(int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); }
+
+// The chunk's occluders (set up into chunk.big by bin_chunk) into their tiles' bins, nearest first: by
+// their nearest corner's depth, then id. The (z, id) order makes the framebuffer the same whatever order
+// a tile composes its triangles in; composed first and nearest first, the occluders soon cover the tile,
+// and its far depth (behind_tile) rejects more of the later triangles whole (docs/speed-history.md).
+// Smaller triangles gained nothing from it, and lost the sort's time.
+inline void bin_occluders(Chunk& chunk, std::size_t tiles_x) {
+    // The depths are finite: binning stops at the first triangle that is not.
+    std::sort(chunk.occluders.begin(), chunk.occluders.end());
+    for (const auto& [z, id, k] : chunk.occluders) {
+        const Placed& p = chunk.big[k].p;
+        for (int ty = tile_of(p.j_lo); ty <= tile_of(p.j_hi); ++ty)
+            for (int tx = tile_of(p.i_lo); tx <= tile_of(p.i_hi); ++tx)
+                append(chunk.occluder_bins[static_cast<std::size_t>(ty) * tiles_x + tx], {id, k});
+    }
+}
+
+// Places the triangles [begin, end), appends each to its tiles' bins and sets up the big ones into
+// chunk.big; the occluders wait in chunk.occluders for bin_occluders.
 template <Fault F>
-void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
-               std::size_t tiles) {
-    // Emptied, keeping the bins' storage of the last render (Workspace).
-    chunk.non_finite.reset();
-    chunk.big.clear();
-    const auto empty_bins = [tiles](auto& bins) {
-        bins.resize(tiles);
-        for (auto& bin : bins) bin.clear();
-    };
-    empty_bins(chunk.fixed_bins);
-    empty_bins(chunk.small_bins);
-    empty_bins(chunk.big_bins);
+void bin_triangles(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
+                   std::size_t tiles) {
     const bool lean = is_fixed(scene.c.precision) && scene.c.fixed_fits;
     if (lean) {
         // Room for a uniform spread with some slack, so that most bins never reallocate and copy; pages
@@ -114,8 +139,6 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         const std::size_t expected = (end - begin) / tiles;
         for (std::vector<SmallFixed>& bin : chunk.fixed_bins) bin.reserve(expected + expected / 2 + 8);
     }
-    // Pixel indices inside the viewport are not negative: unsigned division is a shift.
-    const auto tile_of = [](int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); };
     const auto bin_small = [&](const SmallFixed& record) {
         for (int ty = tile_of(record.j_lo); ty <= tile_of(record.j_hi); ++ty)
             for (int tx = tile_of(record.i_lo); tx <= tile_of(record.i_hi); ++tx)
@@ -142,7 +165,15 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         const std::optional<Placed> placed = place<F>(triangle, scene.c);
         if (!placed) return true;
         const bool small = is_small(*placed);
-        if (!small) chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
+        if (!small) {
+            chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
+            if (is_occluder(*placed)) {
+                const Corners& v = placed->v;
+                chunk.occluders.emplace_back(std::min({v[0].z, v[1].z, v[2].z}), static_cast<std::int32_t>(id),
+                                             static_cast<std::uint32_t>(chunk.big.size() - 1));
+                return true;
+            }
+        }
         for (int ty = tile_of(placed->j_lo); ty <= tile_of(placed->j_hi); ++ty)
             for (int tx = tile_of(placed->i_lo); tx <= tile_of(placed->i_hi); ++tx) {
                 const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
@@ -190,11 +221,30 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
         return;
     }
     for (std::size_t id = begin; id != end; ++id) {
-        SmallFixed record;
+        SmallFixed record{};  // read only where place_small_fixed filled it, which GCC cannot tell
         const auto named = static_cast<std::int32_t>(id);
         const Lane lane = lean ? place_small_fixed<F>(scene.triangles[id], named, scene.c, record) : Lane::general;
         if (!bin(id, lane, record)) return;
     }
+}
+
+template <Fault F>
+void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
+               std::size_t tiles) {
+    // Emptied, keeping the bins' storage of the last render (Workspace).
+    chunk.non_finite.reset();
+    chunk.big.clear();
+    chunk.occluders.clear();
+    const auto empty_bins = [tiles](auto& bins) {
+        bins.resize(tiles);
+        for (auto& bin : bins) bin.clear();
+    };
+    empty_bins(chunk.fixed_bins);
+    empty_bins(chunk.small_bins);
+    empty_bins(chunk.big_bins);
+    empty_bins(chunk.occluder_bins);
+    bin_triangles<F>(chunk, begin, end, scene, tiles_x, tiles);
+    bin_occluders(chunk, tiles_x);
 }
 
 }  // namespace rast::fast::detail

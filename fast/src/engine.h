@@ -1,4 +1,5 @@
-// The rasterizer proper: screen tiles of 64 x 64 pixels, binned triangles composed in id order per tile,
+// The rasterizer proper: screen tiles of 64 x 64 pixels, binned triangles composed in id order per tile
+// (the largest nearest first: the (z, id) order makes the result the same either way),
 // trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample index (a tiny
 // triangle's coverage found with its run's, in stamps). Templated on the injected fault; render.cpp
 // instantiates Fault::none, the testing target the others. This file is the threaded driver and a tile's
@@ -54,7 +55,8 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
     // are contiguous row by row: clearing the tile buffer and copying it out moves its bytes twice more
     // (2.5 ms for a 1024 x 1024 screen on one thread, half the time of a mesh that leaves most tiles empty).
     const bool empty = std::all_of(chunks.begin(), chunks.end(), [index](const Chunk& chunk) {
-        return chunk.fixed_bins[index].empty() && chunk.small_bins[index].empty() && chunk.big_bins[index].empty();
+        return chunk.fixed_bins[index].empty() && chunk.small_bins[index].empty() && chunk.big_bins[index].empty() &&
+               chunk.occluder_bins[index].empty();
     });
     if (empty) {
         const std::size_t row = static_cast<std::size_t>(width) * samples;
@@ -65,6 +67,14 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         return;
     }
     tile.clear();
+    // The occluders first, nearest first (bin_occluders); then the rest in id order.
+    for (const Chunk& chunk : chunks) {
+        const std::vector<BigEntry>& occluders = chunk.occluder_bins[index];
+        for (std::size_t b = 0; b < occluders.size(); ++b) {
+            if (b + 1 < occluders.size()) prefetch(chunk.big[occluders[b + 1].setup]);
+            rasterize<F>(chunk.big[occluders[b].setup], occluders[b].id, rect, tile, scene);
+        }
+    }
     constexpr std::int32_t kEnd = std::numeric_limits<std::int32_t>::max();  // above every id (render checks)
     for (const Chunk& chunk : chunks) {
         const std::vector<SmallFixed>& fixed = chunk.fixed_bins[index];
@@ -170,14 +180,14 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     }
     tbb::task_arena& arena = *ws.arena;
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
-    // its triangles in id order, whatever the number of chunks. Binning sets up the big triangles, so
-    // a scene of a few thousand of them already needs it shared out: rast bench's 2000 huge ones (wide
-    // path, exact spans) spend half their instructions there. The count is a multiple of the workers,
-    // so that chunks of equal size share out evenly (2000 huge triangles in 7 chunks kept one of two
-    // threads binning 4/7 of the time): one per worker, up to four where each still gets
-    // kChunkTriangles. A chunk costs about 10^5 instructions of its own (a bin per tile, merged per
-    // tile), which the bunny's 3674 triangles in 8 chunks did not earn back. A scene too small to give
-    // every worker kMinChunkTriangles is binned in as many chunks as it fills.
+    // its triangles in id order (the occluders aside), whatever the number of chunks. Binning sets up
+    // the big triangles, so a scene of a few thousand of them already needs it shared out: rast bench's
+    // 2000 huge ones (wide path, exact spans) spend half their instructions there. The count is a
+    // multiple of the workers, so that chunks of equal size share out evenly (2000 huge triangles in 7
+    // chunks kept one of two threads binning 4/7 of the time): one per worker, up to four where each
+    // still gets kChunkTriangles. A chunk costs about 10^5 instructions of its own (a bin per tile,
+    // merged per tile), which the bunny's 3674 triangles in 8 chunks did not earn back. A scene too
+    // small to give every worker kMinChunkTriangles is binned in as many chunks as it fills.
     const std::size_t n = scene.triangles.size();
     constexpr std::size_t kChunkTriangles = 1024, kMinChunkTriangles = 128;
     const std::size_t workers = static_cast<std::size_t>(arena.max_concurrency());
