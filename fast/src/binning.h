@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <tuple>
 #include <vector>
 
 namespace rast::fast::detail {
@@ -34,6 +33,13 @@ struct BigEntry {
     std::uint32_t setup;  // index into Chunk::big
 };
 
+// An occluder (is_occluder) waiting to be binned, ordered by its nearest corner's depth, then id.
+struct Occluder {
+    double z;
+    BigEntry entry;
+    bool operator<(const Occluder& o) const { return z < o.z || (z == o.z && entry.id < o.entry.id); }
+};
+
 // The triangles of one contiguous id range, binned per tile in id order, the occluders nearest first.
 struct Chunk {
     std::optional<std::size_t> non_finite;  // the first triangle with a non-finite coordinate: binning stopped there
@@ -42,12 +48,12 @@ struct Chunk {
     std::vector<std::vector<SmallTriangle>> small_bins;
     std::vector<std::vector<BigEntry>> big_bins;
     std::vector<std::vector<BigEntry>> occluder_bins;
-    // The occluders, by their nearest corner's depth, then id (bin_occluders); kept for its storage.
-    std::vector<std::tuple<double, std::int32_t, std::uint32_t>> occluders;
+    std::vector<Occluder> occluders;  // waiting for bin_occluders; kept for its storage
 };
 
-// An occluder: a triangle of a tile's area or more, which with a few like it covers a tile. (Taking
-// boxes of two tiles each way instead let long thin triangles in, which cover little.)
+// An occluder: a triangle of a tile's area or more, which with a few like it covers a tile (its area off
+// the screen counts too: a heuristic). Taking boxes of two tiles each way instead let long thin
+// triangles in, which cover little.
 inline bool is_occluder(const Placed& p) {
     const Corners& v = p.v;  // counter-clockwise
     const double twice_area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
@@ -111,19 +117,20 @@ inline SmallFixed small_fixed_of(const PlacedBatch& b, int k, std::int32_t id) {
 // shift.
 inline int tile_of(int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); }
 
-// The chunk's occluders (set up into chunk.big by bin_chunk) into their tiles' bins, nearest first: by
-// their nearest corner's depth, then id. The (z, id) order makes the framebuffer the same whatever order
-// a tile composes its triangles in; composed first and nearest first, the occluders soon cover the tile,
-// and its far depth (behind_tile) rejects more of the later triangles whole (docs/speed-history.md).
-// Smaller triangles gained nothing from it, and lost the sort's time.
+// The chunk's occluders (set up into chunk.big by bin_triangles) into their tiles' bins, nearest first:
+// by their nearest corner's depth, then id. The (z, id) order makes the framebuffer the same whatever
+// order a tile composes its triangles in; composed first and nearest first, the occluders soon cover the
+// tile, and its far depth (behind_tile) rejects more of the later triangles whole (docs/speed-history.md).
+// Smaller triangles gained nothing from it, and lost the sort's time. Each chunk sorts its own: a tile
+// composes them nearest first chunk by chunk.
 inline void bin_occluders(Chunk& chunk, std::size_t tiles_x) {
-    // The depths are finite: binning stops at the first triangle that is not.
+    // The depths are finite: binning stops at the first triangle that is not, and then skips this.
     std::sort(chunk.occluders.begin(), chunk.occluders.end());
-    for (const auto& [z, id, k] : chunk.occluders) {
-        const Placed& p = chunk.big[k].p;
+    for (const Occluder& o : chunk.occluders) {
+        const Placed& p = chunk.big[o.entry.setup].p;
         for (int ty = tile_of(p.j_lo); ty <= tile_of(p.j_hi); ++ty)
             for (int tx = tile_of(p.i_lo); tx <= tile_of(p.i_hi); ++tx)
-                append(chunk.occluder_bins[static_cast<std::size_t>(ty) * tiles_x + tx], {id, k});
+                append(chunk.occluder_bins[static_cast<std::size_t>(ty) * tiles_x + tx], o.entry);
     }
 }
 
@@ -169,8 +176,8 @@ void bin_triangles(Chunk& chunk, std::size_t begin, std::size_t end, const Scene
             chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
             if (is_occluder(*placed)) {
                 const Corners& v = placed->v;
-                chunk.occluders.emplace_back(std::min({v[0].z, v[1].z, v[2].z}), static_cast<std::int32_t>(id),
-                                             static_cast<std::uint32_t>(chunk.big.size() - 1));
+                const BigEntry entry{static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)};
+                chunk.occluders.push_back({std::min({v[0].z, v[1].z, v[2].z}), entry});
                 return true;
             }
         }
@@ -244,7 +251,7 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     empty_bins(chunk.big_bins);
     empty_bins(chunk.occluder_bins);
     bin_triangles<F>(chunk, begin, end, scene, tiles_x, tiles);
-    bin_occluders(chunk, tiles_x);
+    if (!chunk.non_finite) bin_occluders(chunk, tiles_x);  // the render throws otherwise
 }
 
 }  // namespace rast::fast::detail

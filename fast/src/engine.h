@@ -1,5 +1,6 @@
 // The rasterizer proper: screen tiles of 64 x 64 pixels, binned triangles composed in id order per tile
-// (the largest nearest first: the (z, id) order makes the result the same either way),
+// (occluders, of a tile's area or more, first and nearest first: the (z, id) order makes the result the
+// same either way),
 // trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample index (a tiny
 // triangle's coverage found with its run's, in stamps). Templated on the injected fault; render.cpp
 // instantiates Fault::none, the testing target the others. This file is the threaded driver and a tile's
@@ -67,7 +68,7 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         return;
     }
     tile.clear();
-    // The occluders first, nearest first (bin_occluders); then the rest in id order.
+    // The occluders first, nearest first chunk by chunk (bin_occluders); then the rest in id order.
     for (const Chunk& chunk : chunks) {
         const std::vector<BigEntry>& occluders = chunk.occluder_bins[index];
         for (std::size_t b = 0; b < occluders.size(); ++b) {
@@ -80,9 +81,9 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         const std::vector<SmallFixed>& fixed = chunk.fixed_bins[index];
         const std::vector<SmallTriangle>& small = chunk.small_bins[index];
         const std::vector<BigEntry>& big = chunk.big_bins[index];
-        // The three lists are in id order; merged, the tile composes all its triangles in id order. The
-        // common lane's triangles before the next of the other two go in one tight loop, their planes set
-        // up kPlaneBatch at a time.
+        // The three lists are in id order; merged, the tile composes all its other triangles in id order.
+        // The common lane's triangles before the next of the other two go in one tight loop, their planes
+        // set up kPlaneBatch at a time.
         for (std::size_t f = 0, a = 0, b = 0;;) {
             const std::int32_t next_small = a < small.size() ? small[a].id : kEnd;
             const std::int32_t next_big = b < big.size() ? big[b].id : kEnd;

@@ -77,6 +77,37 @@ TEST_P(Depth, CoplanarOverlapIsATieBrokenById) {
     }
 }
 
+// Two coplanar triangles of more than a tile's area (occluders: the engine composes them first, nearest
+// corner first, so B before A whatever their ids): each sample inside both ties, and goes to the lower id
+// with that triangle's own depth, in either id order and on any thread count.
+TEST_P(Depth, CoplanarOccludersTieToTheLowerIdInEitherOrder) {
+    const auto plane = [](double x, double y) { return 0.25 + (x + y) / 1024; };
+    const auto on_plane = [&](double x0, double y0, double x1, double y1, double x2, double y2) {
+        return with_z(tri(x0, y0, x1, y1, x2, y2), plane(x0, y0), plane(x1, y1), plane(x2, y2));
+    };
+    const Triangle a = on_plane(0, 0, 256, 0, 0, 256), b = on_plane(-64, -64, 300, 0, 0, 300);
+    const auto alone = [&](const Triangle& t) { return render(Scene{{256, 256}, 1, {t}}, {GetParam(), 1}); };
+    const Framebuffer a_alone = alone(a), b_alone = alone(b);
+    for (const bool a_first : {true, false}) {
+        const Scene scene{{256, 256}, 1, a_first ? std::vector{a, b} : std::vector{b, a}};
+        const Framebuffer& first_alone = a_first ? a_alone : b_alone;
+        for (const int threads : {1, 2}) {
+            const Framebuffer fb = render(scene, {GetParam(), threads});
+            for (int j = 0; j < 256; j += 5)
+                for (int i = 0; i < 256; i += 3) {
+                    const double x = i + 0.5, y = j + 0.5;
+                    if (x + y < 255) {  // inside both
+                        EXPECT_EQ(fb.id(i, j), 0) << i << ", " << j;
+                        EXPECT_EQ(fb.depth[fb.index(i, j)], first_alone.depth[first_alone.index(i, j)])
+                            << i << ", " << j;
+                    } else if (x + y > 257 && x + y < 299) {  // B's alone
+                        EXPECT_EQ(fb.id(i, j), a_first ? 1 : 0) << i << ", " << j;
+                    }
+                }
+        }
+    }
+}
+
 // A covers the viewport with z = x, B with z = c: A is nearer where x < c. At c = 4.5 the centre
 // x = 4.5 is an exact tie, owned by the lower id.
 TEST_P(Depth, Interpenetration) {

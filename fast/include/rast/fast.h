@@ -33,8 +33,10 @@
 //
 // Determinism. The framebuffer is identical for every thread count and every SIMD target (Highway
 // dynamic dispatch: SSE4, AVX2, AVX-512 where present): coverage is exact or evaluated in the same IEEE
-// operations everywhere, and the (z, id) order, decided exactly, is the same whatever order a tile
-// composes its triangles in (in id order, the largest nearest first).
+// operations everywhere, and each sample ends with its (z, id)-least triangle, decided exactly, and that
+// triangle's own depth, computed the same way by every path that stores it, whatever order a tile
+// composes its triangles in (triangles of a tile's area or more nearest first, in an order that depends
+// on the thread count; then the others in id order).
 //
 // Lines (Scene::lines, rast/scene.h). After the triangles, each line's pixels (bresenham() on the fixed
 // mode's grid, dda() in the float modes' type) are offered to the finished z-buffer on one thread; a lit
