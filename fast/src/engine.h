@@ -68,13 +68,15 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         return;
     }
     tile.clear();
+    // Entry b of a bin of big triangles, the next one's setup fetched meanwhile.
+    const auto compose_big = [&](const Chunk& chunk, const std::vector<BigEntry>& bin, std::size_t b) {
+        if (b + 1 < bin.size()) prefetch(chunk.big[bin[b + 1].setup]);
+        rasterize<F>(chunk.big[bin[b].setup], bin[b].id, rect, tile, scene);
+    };
     // The occluders first, nearest first chunk by chunk (bin_occluders); then the rest in id order.
     for (const Chunk& chunk : chunks) {
         const std::vector<BigEntry>& occluders = chunk.occluder_bins[index];
-        for (std::size_t b = 0; b < occluders.size(); ++b) {
-            if (b + 1 < occluders.size()) prefetch(chunk.big[occluders[b + 1].setup]);
-            rasterize<F>(chunk.big[occluders[b].setup], occluders[b].id, rect, tile, scene);
-        }
+        for (std::size_t b = 0; b < occluders.size(); ++b) compose_big(chunk, occluders, b);
     }
     constexpr std::int32_t kEnd = std::numeric_limits<std::int32_t>::max();  // above every id (render checks)
     for (const Chunk& chunk : chunks) {
@@ -106,9 +108,7 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;
             } else {
-                if (b + 1 < big.size()) prefetch(chunk.big[big[b + 1].setup]);
-                rasterize<F>(chunk.big[big[b].setup], big[b].id, rect, tile, scene);
-                ++b;
+                compose_big(chunk, big, b++);
             }
         }
     }
