@@ -1,6 +1,6 @@
 // Binning, one stage of the fast path (engine.h): each triangle of a contiguous id range placed, set up
 // where it is big, and appended to the bins of the screen tiles its bounding box reaches, in id order
-// (the occluders nearest first: bin_occluders).
+// (the occluders set aside for occluders.h, which orders them over the whole scene).
 #pragma once
 
 #include "place_batch.h"
@@ -33,22 +33,21 @@ struct BigEntry {
     std::uint32_t setup;  // index into Chunk::big
 };
 
-// An occluder (is_occluder) waiting to be binned, ordered by its nearest corner's depth, then id.
+// An occluder (is_occluder) of a chunk: its nearest corner's depth, and its setup.
 struct Occluder {
     double z;
     BigEntry entry;
-    bool operator<(const Occluder& o) const { return z < o.z || (z == o.z && entry.id < o.entry.id); }
 };
 
-// The triangles of one contiguous id range, binned per tile in id order, the occluders nearest first.
+// The triangles of one contiguous id range, binned per tile in id order but for the occluders, listed
+// apart in id order.
 struct Chunk {
     std::optional<std::size_t> non_finite;  // the first triangle with a non-finite coordinate: binning stopped there
     std::vector<Setup> big;
     std::vector<std::vector<SmallFixed>> fixed_bins;
     std::vector<std::vector<SmallTriangle>> small_bins;
     std::vector<std::vector<BigEntry>> big_bins;
-    std::vector<std::vector<BigEntry>> occluder_bins;
-    std::vector<Occluder> occluders;  // waiting for bin_occluders; kept for its storage
+    std::vector<Occluder> occluders;
 };
 
 // An occluder: a triangle of a tile's area or more, which with a few like it covers a tile (its area off
@@ -117,25 +116,8 @@ inline SmallFixed small_fixed_of(const PlacedBatch& b, int k, std::int32_t id) {
 // shift.
 inline int tile_of(int pixel) { return static_cast<int>(static_cast<unsigned>(pixel) / kTile); }
 
-// The chunk's occluders (set up into chunk.big by bin_triangles) into their tiles' bins, nearest first:
-// by their nearest corner's depth, then id. The (z, id) order makes the framebuffer the same whatever
-// order a tile composes its triangles in; composed first and nearest first, the occluders soon cover the
-// tile, and its far depth (behind_tile) rejects more of the later triangles whole (docs/speed-history.md).
-// Smaller triangles gained nothing from it, and lost the sort's time. Each chunk sorts its own: a tile
-// composes them nearest first chunk by chunk.
-inline void bin_occluders(Chunk& chunk, std::size_t tiles_x) {
-    // The depths are finite: binning stops at the first triangle that is not, and then skips this.
-    std::sort(chunk.occluders.begin(), chunk.occluders.end());
-    for (const Occluder& o : chunk.occluders) {
-        const Placed& p = chunk.big[o.entry.setup].p;
-        for (int ty = tile_of(p.j_lo); ty <= tile_of(p.j_hi); ++ty)
-            for (int tx = tile_of(p.i_lo); tx <= tile_of(p.i_hi); ++tx)
-                append(chunk.occluder_bins[static_cast<std::size_t>(ty) * tiles_x + tx], o.entry);
-    }
-}
-
 // Places the triangles [begin, end), appends each to its tiles' bins and sets up the big ones into
-// chunk.big; the occluders wait in chunk.occluders for bin_occluders.
+// chunk.big; the occluders go to chunk.occluders.
 template <Fault F>
 void bin_triangles(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView& scene, std::size_t tiles_x,
                    std::size_t tiles) {
@@ -249,9 +231,7 @@ void bin_chunk(Chunk& chunk, std::size_t begin, std::size_t end, const SceneView
     empty_bins(chunk.fixed_bins);
     empty_bins(chunk.small_bins);
     empty_bins(chunk.big_bins);
-    empty_bins(chunk.occluder_bins);
     bin_triangles<F>(chunk, begin, end, scene, tiles_x, tiles);
-    if (!chunk.non_finite) bin_occluders(chunk, tiles_x);  // the render throws otherwise
 }
 
 }  // namespace rast::fast::detail

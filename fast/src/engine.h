@@ -1,19 +1,19 @@
 // The rasterizer proper: screen tiles of 64 x 64 pixels, binned triangles composed in id order per tile
 // (occluders, of a tile's area or more, first and nearest first: the (z, id) order makes the result the
-// same either way),
-// trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample index (a tiny
-// triangle's coverage found with its run's, in stamps). Templated on the injected fault; render.cpp
-// instantiates Fault::none, the testing target the others. This file is the threaded driver and a tile's
-// merge of its bins; the stages are binning.h (bins; small triangles placed eight at a time,
-// place_batch.h), setup.h (placing and setting up a triangle), coverage.h (which samples; stamp.h for
-// tiny blocks), tile_buffer.h (a thread's tile) and compose.h (a triangle into a tile), then
-// line_pass.h (the lines, last).
+// same either way), trivial reject / accept per tile, one SIMD kernel call per triangle, tile and sample
+// index (a tiny triangle's coverage found with its run's, in stamps). Templated on the injected fault;
+// render.cpp instantiates Fault::none, the testing target the others. This file is the threaded driver and
+// a tile's merge of its bins; the stages are binning.h (bins; small triangles placed eight at a time,
+// place_batch.h), occluders.h (the occluders' order over the scene), setup.h (placing and setting up a
+// triangle), coverage.h (which samples; stamp.h for tiny blocks), tile_buffer.h (a thread's tile) and
+// compose.h (a triangle into a tile), then line_pass.h (the lines, last).
 #pragma once
 
 #include "binning.h"
 #include "compose.h"
 #include "coverage.h"
 #include "line_pass.h"
+#include "occluders.h"
 #include "setup.h"
 #include "tile_buffer.h"
 #include "validate.h"
@@ -48,16 +48,15 @@ inline void prefetch(const Setup& s) {
 }
 
 template <Fault F>
-void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRect& rect, TileBuffer& tile,
-                 const SceneView& scene, Framebuffer& fb) {
+void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::Entry> occluders, std::size_t index,
+                 const TileRect& rect, TileBuffer& tile, const SceneView& scene, Framebuffer& fb) {
     const int samples = static_cast<int>(scene.c.offsets.size());
     const int width = rect.i1 - rect.i0 + 1;
     // A tile no triangle reaches is written empty straight into the framebuffer, where its pixels' samples
     // are contiguous row by row: clearing the tile buffer and copying it out moves its bytes twice more
     // (2.5 ms for a 1024 x 1024 screen on one thread, half the time of a mesh that leaves most tiles empty).
-    const bool empty = std::all_of(chunks.begin(), chunks.end(), [index](const Chunk& chunk) {
-        return chunk.fixed_bins[index].empty() && chunk.small_bins[index].empty() && chunk.big_bins[index].empty() &&
-               chunk.occluder_bins[index].empty();
+    const bool empty = occluders.empty() && std::all_of(chunks.begin(), chunks.end(), [index](const Chunk& chunk) {
+        return chunk.fixed_bins[index].empty() && chunk.small_bins[index].empty() && chunk.big_bins[index].empty();
     });
     if (empty) {
         const std::size_t row = static_cast<std::size_t>(width) * samples;
@@ -68,16 +67,14 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
         return;
     }
     tile.clear();
-    // Entry b of a bin of big triangles, the next one's setup fetched meanwhile.
-    const auto compose_big = [&](const Chunk& chunk, const std::vector<BigEntry>& bin, std::size_t b) {
-        if (b + 1 < bin.size()) prefetch(chunk.big[bin[b + 1].setup]);
-        rasterize<F>(chunk.big[bin[b].setup], bin[b].id, rect, tile, scene);
+    // A big triangle, the setup of the one composed after it (where known) fetched meanwhile.
+    const auto compose_big = [&](const Setup& setup, std::int32_t id, const Setup* next) {
+        if (next) prefetch(*next);
+        rasterize<F>(setup, id, rect, tile, scene);
     };
-    // The occluders first, nearest first chunk by chunk (bin_occluders); then the rest in id order.
-    for (const Chunk& chunk : chunks) {
-        const std::vector<BigEntry>& occluders = chunk.occluder_bins[index];
-        for (std::size_t b = 0; b < occluders.size(); ++b) compose_big(chunk, occluders, b);
-    }
+    // The occluders first, nearest first (occluders.h); then the rest in id order.
+    for (std::size_t k = 0; k < occluders.size(); ++k)
+        compose_big(*occluders[k].setup, occluders[k].id, k + 1 < occluders.size() ? occluders[k + 1].setup : nullptr);
     constexpr std::int32_t kEnd = std::numeric_limits<std::int32_t>::max();  // above every id (render checks)
     for (const Chunk& chunk : chunks) {
         const std::vector<SmallFixed>& fixed = chunk.fixed_bins[index];
@@ -108,7 +105,8 @@ void render_tile(std::span<const Chunk> chunks, std::size_t index, const TileRec
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;
             } else {
-                compose_big(chunk, big, b++);
+                compose_big(chunk.big[big[b].setup], big[b].id, b + 1 < big.size() ? &chunk.big[big[b + 1].setup] : nullptr);
+                ++b;
             }
         }
     }
@@ -145,6 +143,7 @@ inline void fit(Framebuffer& fb, Viewport vp, int samples) {
 // thread and the threads' arena (Renderer, fast.h, says why).
 struct Workspace {
     std::vector<Chunk> chunks;
+    SceneOccluders occluders;
     // One per thread of the arena, by its index there, fitted by the thread's first tile of a render (a
     // thread that gets no tile costs nothing).
     std::vector<TileBuffer> tiles;
@@ -210,6 +209,12 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     // framebuffer is untouched until the scene is known to be valid.
     for (const Chunk& chunk : chunks)
         if (chunk.non_finite) validate(scene.triangles[*chunk.non_finite], *chunk.non_finite);
+    arena.execute([&] {
+        ws.occluders.gather(chunks, tiles_x, tiles);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles / tiles_x, 1), [&](const auto& r) {
+            for (std::size_t ty = r.begin(); ty != r.end(); ++ty) ws.occluders.bin_row(ty);
+        });
+    });
     fit(fb, c.vp, scene.samples);
     arena.execute([&] {
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles, 1), [&](const auto& r) {
@@ -218,7 +223,7 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
             for (std::size_t index = r.begin(); index != r.end(); ++index) {
                 const int i0 = static_cast<int>(index % tiles_x) * kTile, j0 = static_cast<int>(index / tiles_x) * kTile;
                 const TileRect rect{i0, std::min(i0 + kTile, c.vp.width) - 1, j0, std::min(j0 + kTile, c.vp.height) - 1};
-                render_tile<F>(chunks, index, rect, tile, view, fb);
+                render_tile<F>(chunks, ws.occluders.of(index), index, rect, tile, view, fb);
             }
         });
     });

@@ -77,12 +77,17 @@ void expect_same_bins(const Chunk& got, const Chunk& want, const std::string& wh
         for (std::size_t k = 0; k < want.small_bins[tile].size(); ++k)
             ASSERT_EQ(got.small_bins[tile][k].id, want.small_bins[tile][k].id) << what;
     }
-    for (const auto bins : {&Chunk::big_bins, &Chunk::occluder_bins})
-        for (std::size_t tile = 0; tile < (want.*bins).size(); ++tile) {
-            ASSERT_EQ((got.*bins)[tile].size(), (want.*bins)[tile].size()) << what;
-            for (std::size_t k = 0; k < (want.*bins)[tile].size(); ++k)
-                ASSERT_EQ((got.*bins)[tile][k].id, (want.*bins)[tile][k].id) << what;
-        }
+    for (std::size_t tile = 0; tile < want.big_bins.size(); ++tile) {
+        ASSERT_EQ(got.big_bins[tile].size(), want.big_bins[tile].size()) << what;
+        for (std::size_t k = 0; k < want.big_bins[tile].size(); ++k)
+            ASSERT_EQ(got.big_bins[tile][k].id, want.big_bins[tile][k].id) << what;
+    }
+    ASSERT_EQ(got.occluders.size(), want.occluders.size()) << what;
+    for (std::size_t k = 0; k < want.occluders.size(); ++k) {
+        ASSERT_EQ(got.occluders[k].entry.id, want.occluders[k].entry.id) << what;
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(got.occluders[k].z), std::bit_cast<std::uint64_t>(want.occluders[k].z))
+            << what;
+    }
 }
 
 TEST(Binning, EightAtATimeEqualsOneAtATime) {

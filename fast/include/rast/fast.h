@@ -35,8 +35,8 @@
 // dynamic dispatch: SSE4, AVX2, AVX-512 where present): coverage is exact or evaluated in the same IEEE
 // operations everywhere, and each sample ends with its (z, id)-least triangle, decided exactly, and that
 // triangle's own depth, computed the same way by every path that stores it, whatever order a tile
-// composes its triangles in (triangles of a tile's area or more nearest first, in an order that depends
-// on the thread count; then the others in id order).
+// composes its triangles in (triangles of a tile's area or more nearest first, then the others in id
+// order).
 //
 // Lines (Scene::lines, rast/scene.h). After the triangles, each line's pixels (bresenham() on the fixed
 // mode's grid, dda() in the float modes' type) are offered to the finished z-buffer on one thread; a lit

@@ -1,0 +1,72 @@
+// The scene's occluders (is_occluder, binning.h) in one order, nearest first, binned per tile: a tile
+// composes them before its other triangles (render_tile, engine.h). The (z, id) order makes the
+// framebuffer the same whatever order a tile composes its triangles in; composed first and nearest first,
+// the occluders soon cover the tile, and its far depth (behind_tile) rejects more of the later triangles
+// whole (docs/speed-history.md). One order for the whole scene, whatever the number of chunks: each chunk
+// sorting its own made two threads compose every chunk's nearest occluders in turn, and merging the
+// chunks' sorted bins in each tile cost more than it saved on scenes of many occluders.
+#pragma once
+
+#include "binning.h"
+#include "setup.h"
+
+#include <tbb/parallel_sort.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace rast::fast::detail {
+
+class SceneOccluders {
+public:
+    // An occluder in a tile's bin.
+    struct Entry {
+        const Setup* setup;
+        std::int32_t id;
+    };
+
+    // Takes every chunk's occluders, the chunks binned in full (their setups no longer move), and sorts
+    // them by their nearest corner's depth, then id: tbb's sort, in the caller's task arena.
+    void gather(std::span<const Chunk> chunks, std::size_t tiles_x, std::size_t tiles) {
+        tiles_x_ = tiles_x;
+        bins_.resize(tiles);
+        sorted_.clear();
+        for (const Chunk& chunk : chunks)
+            for (const Occluder& o : chunk.occluders) {
+                const Setup& s = chunk.big[o.entry.setup];
+                sorted_.push_back({o.z, o.entry.id, &s, tile_of(s.p.i_lo), tile_of(s.p.i_hi), tile_of(s.p.j_lo),
+                                   tile_of(s.p.j_hi)});
+            }
+        tbb::parallel_sort(sorted_.begin(), sorted_.end());  // the depths are finite: render checked them
+    }
+
+    // Fills the bins of row ty of tiles with the sorted occluders that reach them, in order. The rows are
+    // independent: threads may bin them at once.
+    void bin_row(std::size_t ty) {
+        const std::span<std::vector<Entry>> row(bins_.data() + ty * tiles_x_, tiles_x_);
+        for (std::vector<Entry>& bin : row) bin.clear();
+        const int y = static_cast<int>(ty);
+        for (const Ranked& r : sorted_)
+            if (r.ty0 <= y && y <= r.ty1)
+                for (int tx = r.tx0; tx <= r.tx1; ++tx) append(row[static_cast<std::size_t>(tx)], {r.setup, r.id});
+    }
+
+    // Tile `index`'s occluders, nearest first.
+    std::span<const Entry> of(std::size_t index) const { return bins_[index]; }
+
+private:
+    struct Ranked {
+        double z;
+        std::int32_t id;
+        const Setup* setup;
+        int tx0, tx1, ty0, ty1;  // the tiles its box reaches
+        bool operator<(const Ranked& o) const { return z < o.z || (z == o.z && id < o.id); }
+    };
+    std::size_t tiles_x_ = 0;
+    std::vector<Ranked> sorted_;
+    std::vector<std::vector<Entry>> bins_;
+};
+
+}  // namespace rast::fast::detail
