@@ -139,11 +139,11 @@ inline void fit(Framebuffer& fb, Viewport vp, int samples) {
     fb.depth.resize(size);
 }
 
-// What a render allocates, kept by a Renderer for the next one: the chunks' bins, a tile buffer per
-// thread and the threads' arena (Renderer, fast.h, says why).
+// What a render allocates, kept by a Renderer for the next one: the chunks' bins, the occluders', a tile
+// buffer per thread and the threads' arena (Renderer, fast.h, says why).
 struct Workspace {
     std::vector<Chunk> chunks;
-    SceneOccluders occluders;
+    SceneOccluders occluders;  // names setups in chunks[k].big: valid from its gather to the render's end
     // One per thread of the arena, by its index there, fitted by the thread's first tile of a render (a
     // thread that gets no tile costs nothing).
     std::vector<TileBuffer> tiles;
@@ -209,11 +209,13 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     // framebuffer is untouched until the scene is known to be valid.
     for (const Chunk& chunk : chunks)
         if (chunk.non_finite) validate(scene.triangles[*chunk.non_finite], *chunk.non_finite);
+    // The occluders in one order, binned in about four ranges of tile rows a worker.
     arena.execute([&] {
         ws.occluders.gather(chunks, tiles_x, tiles);
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles / tiles_x, 1), [&](const auto& r) {
-            for (std::size_t ty = r.begin(); ty != r.end(); ++ty) ws.occluders.bin_row(ty);
-        });
+        const int rows = static_cast<int>(tiles / tiles_x);
+        const int grain = std::max(1, rows / static_cast<int>(4 * workers));
+        tbb::parallel_for(tbb::blocked_range<int>(0, rows, grain),
+                          [&](const auto& r) { ws.occluders.bin_rows(r.begin(), r.end()); });
     });
     fit(fb, c.vp, scene.samples);
     arena.execute([&] {

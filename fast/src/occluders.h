@@ -12,6 +12,7 @@
 
 #include <tbb/parallel_sort.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -27,8 +28,9 @@ public:
         std::int32_t id;
     };
 
-    // Takes every chunk's occluders, the chunks binned in full (their setups no longer move), and sorts
-    // them by their nearest corner's depth, then id: tbb's sort, in the caller's task arena.
+    // Takes every chunk's occluders, the chunks binned in full (their setups do not move until they are
+    // binned again), and sorts them by their nearest corner's depth, then id: tbb's sort, in the caller's
+    // task arena.
     void gather(std::span<const Chunk> chunks, std::size_t tiles_x, std::size_t tiles) {
         tiles_x_ = tiles_x;
         bins_.resize(tiles);
@@ -42,15 +44,15 @@ public:
         tbb::parallel_sort(sorted_.begin(), sorted_.end());  // the depths are finite: render checked them
     }
 
-    // Fills the bins of row ty of tiles with the sorted occluders that reach them, in order. The rows are
-    // independent: threads may bin them at once.
-    void bin_row(std::size_t ty) {
-        const std::span<std::vector<Entry>> row(bins_.data() + ty * tiles_x_, tiles_x_);
-        for (std::vector<Entry>& bin : row) bin.clear();
-        const int y = static_cast<int>(ty);
+    // Fills the bins of rows [ty0, ty1) of tiles with the sorted occluders that reach them, in order, in
+    // one pass over them (a pass per row would cost rows x occluders on a tall screen). Ranges of rows
+    // are independent: threads may bin them at once.
+    void bin_rows(int ty0, int ty1) {
+        for (auto bin = bins_.begin() + ty0 * tiles_x_; bin != bins_.begin() + ty1 * tiles_x_; ++bin) bin->clear();
         for (const Ranked& r : sorted_)
-            if (r.ty0 <= y && y <= r.ty1)
-                for (int tx = r.tx0; tx <= r.tx1; ++tx) append(row[static_cast<std::size_t>(tx)], {r.setup, r.id});
+            for (int ty = std::max(r.ty0, ty0); ty <= std::min(r.ty1, ty1 - 1); ++ty)
+                for (int tx = r.tx0; tx <= r.tx1; ++tx)
+                    append(bins_[static_cast<std::size_t>(ty) * tiles_x_ + tx], {r.setup, r.id});
     }
 
     // Tile `index`'s occluders, nearest first.

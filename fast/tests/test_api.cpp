@@ -239,7 +239,9 @@ TEST(Api, ARendererForgetsTheLastScenesWideSpans) {
 
 // One Renderer through scenes of other triangles, sizes, sample counts and precisions, each rendered as
 // a fresh call renders it; the thread count changes only between runs of them, so that its arena and
-// tile buffers are kept too.
+// tile buffers are kept too. Every fifth triangle is an occluder (binning.h), enough triangles for two
+// chunks on two threads, and a scene that fails its check comes before every other one: the occluders'
+// order (occluders.h), kept from render to render, must not carry a stale entry over.
 TEST(Api, ARendererRendersEachSceneAsAFreshCallDoes) {
     Renderer renderer;
     Framebuffer target;
@@ -251,9 +253,16 @@ TEST(Api, ARendererRendersEachSceneAsAFreshCallDoes) {
                 Scene scene;
                 scene.viewport = viewports[step % 3];
                 scene.samples = samples;
-                for (int k = 0; k < 40; ++k) {
-                    const double x = 3.0 * k + step, y = 1.5 * k, z = 0.25 + ((k + step) % 7) / 8.0;
-                    scene.triangles.push_back({{{{x, y, z}, {x + 40, y + 3, z}, {x + 5, y + 50 - step, 1 - z}}}});
+                for (int k = 0; k < 300; ++k) {
+                    const double x = 3.0 * (k % 40) + step, y = 1.5 * (k % 40) + k / 40;
+                    const double z = 0.25 + ((k + step) % 7) / 8.0, reach = k % 5 == 0 ? 140 : 40;
+                    scene.triangles.push_back(
+                        {{{{x, y, z}, {x + reach, y + 3, z}, {x + 5, y + reach + 10 - step, 1 - z}}}});
+                }
+                if (step % 2 == 1) {
+                    Scene bad = scene;
+                    bad.triangles[150].v[2].y = std::numeric_limits<double>::quiet_NaN();
+                    EXPECT_THROW(renderer.render(bad, target, {precision, threads}), std::invalid_argument);
                 }
                 ++step;
                 renderer.render(scene, target, {precision, threads});
