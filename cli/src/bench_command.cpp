@@ -44,7 +44,7 @@ struct BenchOptions {
 };
 
 // The command as it could be typed again, for the report.
-std::string command_line(const BenchOptions& o) {
+std::string bench_command_line(const BenchOptions& o) {
     std::string command = "rast bench";
     if (o.quick) command += " --quick";
     for (const std::string& section : o.only) command += " --only " + section;
@@ -72,7 +72,7 @@ std::string markdown(const bench::Report& report, const BenchOptions& o) {
     return out + bench::format_table(report);
 }
 
-void run(const BenchOptions& o) {
+void run_bench_command(const BenchOptions& o) {
     check_output_paths({o.mesh}, {{"--json", o.json_out},
                                   {"--plot", o.plot_out},
                                   {"--aa-plot", o.aa_plot_out},
@@ -90,7 +90,7 @@ void run(const BenchOptions& o) {
         config.lines = chosen("lines");
     }
     config.mesh = o.mesh;
-    config.command = command_line(o);
+    config.command = bench_command_line(o);
     for (const std::string& plugin : o.plugins) config.plugins.push_back(plugin_engine(plugin.substr(7), {o.plugin_timeout}));
     bench::Report report = bench::run_bench(config, std::cerr);
     report.notes.insert(report.notes.end(), o.notes.begin(), o.notes.end());
@@ -156,7 +156,7 @@ void add_bench_command(CLI::App& app) {
         ->check(CLI::Range(0.001, 86400.0))
         ->needs(engine)
         ->capture_default_str();
-    bench->callback([options] { run(*options); });
+    bench->callback([options] { run_bench_command(*options); });
 }
 
 }  // namespace rast::cli

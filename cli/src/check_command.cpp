@@ -187,7 +187,7 @@ bool cut_by_near_plane(const Scene& scene) {
     return false;
 }
 
-std::string command_line(const CheckOptions& o) {
+std::string check_command_line(const CheckOptions& o) {
     std::string text = "rast check " + shell_word(o.input.path) + o.input.options() + " --engine " + o.engine.engine;
     if (o.engine.engine == "fast") text += " --precision " + o.engine.precision;
     return text;
@@ -224,7 +224,7 @@ fs::path keep_case(const CheckOptions& o, const Engine& engine, const Scene& sce
         {"properties", mesh ? "tie_rule float_within_bound" : "watertight"},
         {"why", "rast check [" + engine.name + "]: " + where + " " + first.what},
         {"found-by", "rast check"},
-        {"reproduce", command_line(o)}};
+        {"reproduce", check_command_line(o)}};
     const fs::path file = case_file(o, engine);
     fs::create_directories(file.parent_path());
     write_tri_file(file, kept, header);

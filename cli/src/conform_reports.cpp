@@ -14,7 +14,7 @@ namespace rast::cli {
 
 namespace {
 
-const char* status(const conform::PropertyVerdict& p) { return p.failure ? "FAIL" : p.checked == 0 ? "SKIP" : "PASS"; }
+const char* verdict_status(const conform::PropertyVerdict& p) { return p.failure ? "FAIL" : p.checked == 0 ? "SKIP" : "PASS"; }
 
 // Markdown table cells hold no '|' and no line break.
 std::string cell(std::string text) {
@@ -58,7 +58,7 @@ std::string conform_json(const ConformRun& run, const conform::Verdict& verdict)
     for (const auto& p : verdict.properties) {
         skipped += !p.failure && p.checked == 0;
         nlohmann::json entry{{"property", p.property},
-                             {"status", status(p)},
+                             {"status", verdict_status(p)},
                              {"scenes_checked", p.checked},
                              {"not_applicable", p.not_applicable}};
         if (p.failure) {
@@ -91,7 +91,7 @@ std::string conform_markdown(const ConformRun& run, const conform::Verdict& verd
     out += std::string("- verdict: ") + (verdict.conforms() ? "conforms" : "does not conform") + "\n\n";
     out += "| property | verdict | scenes | first violation | shrunk case |\n|---|---|---|---|---|\n";
     for (const auto& p : verdict.properties) {
-        out += "| " + p.property + " | " + status(p) + " | " + std::to_string(p.checked) + " | ";
+        out += "| " + p.property + " | " + verdict_status(p) + " | " + std::to_string(p.checked) + " | ";
         if (p.failure)
             out += cell(p.failure->detail) + " | " + std::to_string(p.failure->scene.triangles.size()) +
                    " triangles (from " + std::to_string(p.failure->original_triangles) + ", " +
