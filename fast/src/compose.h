@@ -114,7 +114,7 @@ template <Fault F, class CornersOf, class BlockDepth>
 // The z-buffer test of block b for integer edges (edges, their steps) straight from a fixed setup,
 // without a Coverage.
 inline bool fixed_block_depth(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
-                              const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                              const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided) {
     std::int64_t e[3], dx[3], dy[3];
     fixed_edges_at(edges, c, b, s, e, dx, dy);
     return depth_rows_scalar(b, [&](int r) { return fixed_row_coverage(e, dx, dy, b.width, r); }, plane, rows,
@@ -132,7 +132,7 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     std::span<const Span> wide;  // a partial tile's, found at the first sample index, past hierarchical z
     std::uint64_t masks[kTile];
     rasterize_blocks<F>([&t]() -> const Corners& { return t.p.v; }, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
-                        [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided) {
                             const bool scalar = b.width * b.rows <= kScalarSamples;
                             const bool partial = cls == TileClass::partial;
                             if (partial && t.p.path == Path::wide && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
@@ -180,7 +180,7 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const St
     const bool scalar = (box.i1 - box.i0 + 1) * (box.j1 - box.j0 + 1) <= kScalarSamples;
     if (narrow && set_up && !scalar) {  // the block is the same at every sample index
         rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
-                            [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows,
+                            [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows,
                                 std::uint64_t* undecided) {
                                 return depth_small(b, small_edges(set_up[s], lane), plane, rows, undecided);
                             });
@@ -188,7 +188,7 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const St
     }
     const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
     rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
-                        [&](const Block& b, int s, const DepthPlane& plane, DepthRows rows, std::uint64_t* undecided) {
+                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided) {
                             if (scalar) return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
                             if (!narrow) {
                                 std::uint64_t masks[kTile];
@@ -236,7 +236,7 @@ struct StampMasks {
 // many rows). The same test sample by sample (depth_sample), so the same result.
 template <bool kPerSample>
 [[gnu::always_inline]] inline bool depth_stamp(const Block& b, std::uint64_t mask, const DepthPlane& p,
-                                               DepthRows rows, std::uint64_t* undecided) {
+                                               const DepthRows& rows, std::uint64_t* undecided) {
     std::uint64_t open = 0;
     for (; mask != 0; mask &= mask - 1) {
         const int k = std::countr_zero(mask), r = k / kStampSide, col = k % kStampSide;
@@ -292,7 +292,7 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
         const TileRect box = box_in(t, rect);
         if (behind_tile(pl, c, tile, box.i0, box.i1, box.j0, box.j1)) continue;
         const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, t.id};
-        const auto depth = [&](const Block& b, int s, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
+        const auto depth = [&](const Block& b, int s, const DepthPlane& p, const DepthRows& rows, std::uint64_t* undecided) {
             return with_stored_bounds(rows, [&](auto per_sample) {
                 return depth_stamp<per_sample>(b, stamps.masks[s][k], p, rows, undecided);
             });

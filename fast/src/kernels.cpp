@@ -398,7 +398,7 @@ HWY_INLINE bool DepthOnColumns(const Block& b, const SmallEdges& edges, const De
     return some;
 }
 
-bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, const DepthRows& rows,
                std::uint64_t* undecided) {
     return with_stored_bounds(rows, [&](auto per_sample) {
         return DepthOnRuns<per_sample>(b, covered, p, rows, undecided);
@@ -408,7 +408,7 @@ bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p
 // The runs first, then the depth test on them: in one loop the edges' nine vectors and the depth test's
 // did not fit the 16 registers of AVX2 together, and the spills cost 5-10% of the time on small triangles.
 // Blocks up to four vectors across are tested by columns (DepthOnColumns), wider ones by runs.
-bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
+bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, const DepthRows& rows,
                 std::uint64_t* undecided) {
     const int lanes = static_cast<int>(hn::Lanes(D()));
     return with_stored_bounds(rows, [&](auto per_sample) {
@@ -454,7 +454,7 @@ void CoverageBlock(const Block& b, const Coverage& c, std::uint64_t* covered) {
 
 // Integer edges go through their row masks and DepthRuns, as the fixed path's own calls (depth_runs,
 // depth_small) do, rather than a fused loop of their own that no path would run.
-bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, DepthRows rows,
+bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, const DepthRows& rows,
                 std::uint64_t* undecided) {
     return with_evaluator(b, c, [&](auto& ev) {
         if constexpr (std::is_same_v<std::remove_cvref_t<decltype(ev)>, FixedEdges>) {
@@ -495,17 +495,17 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
     HWY_DYNAMIC_DISPATCH(CoverageBlock)(block, coverage, covered);
 }
 
-bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
+bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, const DepthRows& rows,
                  std::uint64_t* undecided) {
     return HWY_DYNAMIC_DISPATCH(DepthBlock)(block, coverage, plane, rows, undecided);
 }
 
-bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPlane& plane, DepthRows rows,
+bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPlane& plane, const DepthRows& rows,
                 std::uint64_t* undecided) {
     return HWY_DYNAMIC_DISPATCH(DepthRuns)(block, covered, plane, rows, undecided);
 }
 
-bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,
+bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, const DepthRows& rows,
                  std::uint64_t* undecided) {
     return HWY_DYNAMIC_DISPATCH(DepthSmall)(block, edges, plane, rows, undecided);
 }

@@ -100,18 +100,18 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 // a rounded gap g beyond the rounded margin m has |z' - z| >= g / (1 + u) > m / (1 + u) >=
 // (e + e') kSlack (1 - u) / (1 + u) > e + e'. undecided[r] gets the rest of row r, for the exact
 // comparison; returns whether there are any.
-bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, DepthRows rows,
+bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, const DepthRows& rows,
                  std::uint64_t* undecided);
 
 // depth_block for rows whose covered samples form one run each, given as bits (covered[r]): the depth
 // test runs on that run alone.
-bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPlane& plane, DepthRows rows,
+bool depth_runs(const Block& block, const std::uint64_t* covered, const DepthPlane& plane, const DepthRows& rows,
                 std::uint64_t* undecided);
 
 // depth_runs for integer edges that fit in 32 bits, each row's run found first in lanes of 32 bits
 // (twice as many per vector as the depth test's). A block up to four depth vectors across is tested by
 // whole rows, each lane masked by the run: the result is the same.
-bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, DepthRows rows,
+bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& plane, const DepthRows& rows,
                  std::uint64_t* undecided);
 
 // The largest z[k] for k < n (+infinity when any slot is empty). The maximum is exact, so the order the

@@ -60,7 +60,7 @@ inline std::uint64_t row_coverage(const Block& b, const Coverage& cov, int r) {
 // row term b_dy = b (py - y0): the same operations as the kernels' lanes. kPerSample: whether rows.err
 // holds the stored depths' bounds. Answers whether the sample is left undecided.
 template <bool kPerSample>
-[[gnu::always_inline]] inline bool depth_sample(const DepthPlane& p, DepthRows rows, std::ptrdiff_t at, double px,
+[[gnu::always_inline]] inline bool depth_sample(const DepthPlane& p, const DepthRows& rows, std::ptrdiff_t at, double px,
                                                 double b_dy) {
     const double z = p.z0 + (p.a * (px - p.x0) + b_dy);
     const double stored = rows.z[at], stored_err = kPerSample ? rows.err[at] : p.stored_err;
@@ -77,7 +77,7 @@ template <bool kPerSample>
 // depth_block (kernels.h), one sample at a time, the coverage of row r given by row_mask(r).
 template <bool kPerSample, class RowMask>
 [[gnu::always_inline]] inline bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p,
-                                                     DepthRows rows, std::uint64_t* undecided) {
+                                                     const DepthRows& rows, std::uint64_t* undecided) {
     bool any = false;
     for (int r = 0; r < b.rows; ++r) {
         const double py = double(b.j0 + r) + b.sy;
@@ -96,14 +96,14 @@ template <bool kPerSample, class RowMask>
 
 // depth_rows_scalar with the bounds as rows keeps them.
 template <class RowMask>
-bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, DepthRows rows,
+bool depth_rows_scalar(const Block& b, RowMask row_mask, const DepthPlane& p, const DepthRows& rows,
                        std::uint64_t* undecided) {
     return with_stored_bounds(rows, [&](auto per_sample) {
         return depth_rows_scalar<per_sample>(b, row_mask, p, rows, undecided);
     });
 }
 
-inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, DepthRows rows,
+inline bool depth_block_scalar(const Block& b, const Coverage& cov, const DepthPlane& p, const DepthRows& rows,
                                std::uint64_t* undecided) {
     return depth_rows_scalar(b, [&](int r) { return row_coverage(b, cov, r); }, p, rows, undecided);
 }
