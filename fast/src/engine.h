@@ -62,7 +62,7 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
         const std::size_t row = static_cast<std::size_t>(width) * samples;
         for (int j = rect.j0; j <= rect.j1; ++j) {
             std::fill_n(fb.ids.begin() + fb.index(rect.i0, j), row, Framebuffer::kNoTriangle);
-            std::fill_n(fb.depth.begin() + fb.index(rect.i0, j), row, std::numeric_limits<double>::infinity());
+            fill_far(fb.depth.data() + fb.index(rect.i0, j), row);
         }
         return;
     }

@@ -479,6 +479,15 @@ double Farthest(const double* z, std::size_t n) {
     return result;
 }
 
+void FillFar(double* z, std::size_t n) {
+    const D d;
+    const std::size_t lanes = hn::Lanes(d);
+    const auto far = hn::Set(d, std::numeric_limits<double>::infinity());
+    std::size_t k = 0;
+    for (; k + lanes <= n; k += lanes) hn::StoreU(far, d, z + k);
+    for (; k < n; ++k) z[k] = std::numeric_limits<double>::infinity();
+}
+
 }  // namespace rast::fast::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -490,6 +499,7 @@ HWY_EXPORT(DepthBlock);
 HWY_EXPORT(DepthRuns);
 HWY_EXPORT(DepthSmall);
 HWY_EXPORT(Farthest);
+HWY_EXPORT(FillFar);
 
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered) {
     HWY_DYNAMIC_DISPATCH(CoverageBlock)(block, coverage, covered);
@@ -513,6 +523,8 @@ bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& 
 double farthest(const double* z, std::size_t n) {
     return HWY_DYNAMIC_DISPATCH(Farthest)(z, n);
 }
+
+void fill_far(double* z, std::size_t n) { HWY_DYNAMIC_DISPATCH(FillFar)(z, n); }
 
 }  // namespace rast::fast::detail
 #endif  // HWY_ONCE

@@ -91,7 +91,7 @@ struct alignas(64) TileBuffer {
     }
     // Empty again, as DepthRows (kernels.h) defines it: z = +infinity, one bound for the whole tile.
     void clear() {
-        std::fill_n(z.begin(), size, std::numeric_limits<double>::infinity());
+        fill_far(z.data(), size);
         std::fill_n(ids.begin(), size, Framebuffer::kNoTriangle);
         stored_err = 0;
         per_sample = false;

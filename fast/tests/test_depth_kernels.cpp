@@ -278,5 +278,32 @@ TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
     }
 }
 
+// The tile's two whole-buffer kernels at every length and alignment up to a few vectors: fill_far writes
+// +infinity over exactly [0, n), farthest answers the largest value (+infinity where a slot is empty).
+TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
+    constexpr double kInf = std::numeric_limits<double>::infinity(), kUntouched = 7.5;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        std::mt19937_64 rng(20261127);
+        for (std::size_t offset = 0; offset < 4; ++offset)
+            for (std::size_t n = 0; n <= 40; ++n) {
+                std::vector<double> z(n + 8, kUntouched);
+                fill_far(z.data() + offset, n);
+                for (std::size_t k = 0; k < z.size(); ++k)
+                    ASSERT_EQ(z[k], k >= offset && k < offset + n ? kInf : kUntouched) << n << " from " << offset;
+                if (n == 0) continue;
+                std::uniform_real_distribution<double> depth(-1, 1);
+                for (std::size_t k = offset; k < offset + n; ++k) z[k] = depth(rng);
+                const std::size_t top = offset + rng() % n;
+                z[top] = 2;  // above the rest, and below the untouched slots around the range
+                EXPECT_EQ(farthest(z.data() + offset, n), 2.0) << n << " from " << offset;
+                z[offset + rng() % n] = kInf;
+                EXPECT_EQ(farthest(z.data() + offset, n), kInf) << n << " from " << offset;
+            }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
 }  // namespace
 }  // namespace rast::fast::detail
