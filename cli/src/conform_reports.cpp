@@ -14,7 +14,9 @@ namespace rast::cli {
 
 namespace {
 
-const char* verdict_status(const conform::PropertyVerdict& p) { return p.failure ? "FAIL" : p.checked == 0 ? "SKIP" : "PASS"; }
+const char* verdict_status(const conform::PropertyVerdict& p) {
+    return p.failure ? "FAIL" : p.checked == 0 ? "SKIP" : "PASS";
+}
 
 // Markdown table cells hold no '|' and no line break.
 std::string cell(std::string text) {

@@ -132,7 +132,8 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     std::span<const Span> wide;  // a partial tile's, found at the first sample index, past hierarchical z
     std::uint64_t masks[kTile];
     rasterize_blocks<F>([&t]() -> const Corners& { return t.p.v; }, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
-                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided) {
+                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows,
+                            std::uint64_t* undecided) {
                             const bool scalar = b.width * b.rows <= kScalarSamples;
                             const bool partial = cls == TileClass::partial;
                             if (partial && t.p.path == Path::wide && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
@@ -188,7 +189,8 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const St
     }
     const std::array<FixedEdge, 3> edges = fixed_edges<F>(t.x, t.y);
     rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
-                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided) {
+                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows,
+                            std::uint64_t* undecided) {
                             if (scalar) return fixed_block_depth(edges, c, b, s, plane, rows, undecided);
                             if (!narrow) {
                                 std::uint64_t masks[kTile];
@@ -292,7 +294,8 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
         const TileRect box = box_in(t, rect);
         if (behind_tile(pl, c, tile, box.i0, box.i1, box.j0, box.j1)) continue;
         const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, t.id};
-        const auto depth = [&](const Block& b, int s, const DepthPlane& p, const DepthRows& rows, std::uint64_t* undecided) {
+        const auto depth = [&](const Block& b, int s, const DepthPlane& p, const DepthRows& rows,
+                               std::uint64_t* undecided) {
             return with_stored_bounds(rows, [&](auto per_sample) {
                 return depth_stamp<per_sample>(b, stamps.masks[s][k], p, rows, undecided);
             });

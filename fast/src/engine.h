@@ -105,7 +105,8 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
                 rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
                 ++a;
             } else {
-                compose_big(chunk.big[big[b].setup], big[b].id, b + 1 < big.size() ? &chunk.big[big[b + 1].setup] : nullptr);
+                const Setup* next = b + 1 < big.size() ? &chunk.big[big[b + 1].setup] : nullptr;
+                compose_big(chunk.big[big[b].setup], big[b].id, next);
                 ++b;
             }
         }
