@@ -33,12 +33,6 @@ struct BigEntry {
     std::uint32_t setup;  // index into Chunk::big
 };
 
-// An occluder (is_occluder) of a chunk: its nearest corner's depth, and its setup.
-struct Occluder {
-    double z;
-    BigEntry entry;
-};
-
 // The triangles of one contiguous id range, binned per tile in id order but for the occluders, listed
 // apart in id order.
 struct Chunk {
@@ -47,7 +41,7 @@ struct Chunk {
     std::vector<std::vector<SmallFixed>> fixed_bins;
     std::vector<std::vector<SmallTriangle>> small_bins;
     std::vector<std::vector<BigEntry>> big_bins;
-    std::vector<Occluder> occluders;
+    std::vector<BigEntry> occluders;  // is_occluder's, set up in big
 };
 
 // An occluder: a triangle of a tile's area or more, which with a few like it covers a tile (its area off
@@ -154,12 +148,11 @@ void bin_triangles(Chunk& chunk, std::size_t begin, std::size_t end, const Scene
         const std::optional<Placed> placed = place<F>(triangle, scene.c);
         if (!placed) return true;
         const bool small = is_small(*placed);
+        const BigEntry entry{static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size())};  // if big
         if (!small) {
             chunk.big.push_back(setup_triangle<F>(*placed, scene.c, true));
             if (is_occluder(*placed)) {
-                const Corners& v = placed->v;
-                const BigEntry entry{static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)};
-                chunk.occluders.push_back({std::min({v[0].z, v[1].z, v[2].z}), entry});
+                chunk.occluders.push_back(entry);
                 return true;
             }
         }
@@ -167,7 +160,7 @@ void bin_triangles(Chunk& chunk, std::size_t begin, std::size_t end, const Scene
             for (int tx = tile_of(placed->i_lo); tx <= tile_of(placed->i_hi); ++tx) {
                 const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
                 if (small) append(chunk.small_bins[tile], {*placed, static_cast<std::int32_t>(id)});
-                else append(chunk.big_bins[tile], {static_cast<std::int32_t>(id), static_cast<std::uint32_t>(chunk.big.size() - 1)});
+                else append(chunk.big_bins[tile], entry);
             }
         return true;
     };

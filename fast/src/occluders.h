@@ -36,10 +36,11 @@ public:
         bins_.resize(tiles);
         sorted_.clear();
         for (const Chunk& chunk : chunks)
-            for (const Occluder& o : chunk.occluders) {
-                const Setup& s = chunk.big[o.entry.setup];
-                sorted_.push_back({o.z, o.entry.id, &s, tile_of(s.p.i_lo), tile_of(s.p.i_hi), tile_of(s.p.j_lo),
-                                   tile_of(s.p.j_hi)});
+            for (const BigEntry& o : chunk.occluders) {
+                const Setup& s = chunk.big[o.setup];
+                const Corners& v = s.p.v;
+                sorted_.push_back({std::min({v[0].z, v[1].z, v[2].z}), o.id, &s, tile_of(s.p.i_lo), tile_of(s.p.i_hi),
+                                   tile_of(s.p.j_lo), tile_of(s.p.j_hi)});
             }
         tbb::parallel_sort(sorted_.begin(), sorted_.end());  // the depths are finite: render checked them
     }
