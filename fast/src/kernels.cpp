@@ -165,11 +165,11 @@ struct Float32Edges {
     hn::Vec<DF> ax[3], d3[3], t1[3], lane, sx;
 };
 
-// The loops take the evaluator (and DepthLoop the block) by value: a local whose address never escapes
+// The loops take the evaluator and the block by value: a local whose address never escapes
 // stays in registers, where one behind a reference is reloaded and stored around every vector store (an
 // integer vector store may alias anything).
 template <class Evaluator>
-void CoverageLoop(const Block& b, Evaluator ev, std::uint64_t* covered) {
+void CoverageLoop(const Block b, Evaluator ev, std::uint64_t* covered) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
@@ -272,7 +272,7 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
 // k * Lanes + l) inside all three. A count the compiler knows unrolls the loop (a small triangle's rows
 // take one or two vectors, and the loop's own instructions were as many as the evaluation's).
 template <class Row>
-HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block& b, int count, Row row_lanes) {
+HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block b, int count, Row row_lanes) {
     using DI32 = hn::ScalableTag<std::int32_t>;
     const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
@@ -298,7 +298,7 @@ HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block& b, int coun
 }
 
 // The covered samples of each row of a block as bits (SmallEdgeLanes).
-HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint64_t* covered) {
+HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block b, std::uint64_t* covered) {
     const hn::ScalableTag<std::int32_t> di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
     const std::uint64_t in_block = first_bits(b.width);
@@ -312,7 +312,7 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block& b, std::uint
 // [first, last]), in vectors from the run's first sample. py = j + sy and px = i + sx are stepped exactly
 // (sums of integers below 2^25 and multiples of 1/16), so they are the values DepthLoop computes.
 template <bool kPerSample>
-HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
+HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
                             std::uint64_t* undecided) {
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
@@ -348,7 +348,7 @@ HWY_INLINE bool DepthOnRuns(const Block& b, const std::uint64_t* covered, const 
 // coverage is kept as lanes, not bits, and so is what stays undecided until the block is done: turning
 // each vector's mask into bits and back took a third of the loop. px = i + sx is exact, as in DepthOnRuns.
 template <int kVectors, bool kPerSample>
-HWY_INLINE bool DepthOnColumns(const Block& b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
+HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                                std::uint64_t* undecided) {
     const D d;
     const DI di;
