@@ -183,7 +183,7 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const St
         rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
                             [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows,
                                 std::uint64_t* undecided) {
-                                return depth_small(b, small_edges(set_up[s], lane), plane, rows, undecided);
+                                return c.depth_small(b, small_edges(set_up[s], lane), plane, rows, undecided);
                             });
         return;
     }
@@ -205,7 +205,7 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const St
                                 small.dx[k] = static_cast<std::int32_t>(dx[k]);
                                 small.dy[k] = static_cast<std::int32_t>(dy[k]);
                             }
-                            return depth_small(b, small, plane, rows, undecided);
+                            return c.depth_small(b, small, plane, rows, undecided);
                         });
 }
 

@@ -468,6 +468,8 @@ bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, const De
     });
 }
 
+DepthSmallKernel DepthSmallKernelOf() { return &DepthSmall; }
+
 double Farthest(const double* z, std::size_t n) {
     const D d;
     const std::size_t lanes = hn::Lanes(d);
@@ -498,6 +500,7 @@ HWY_EXPORT(CoverageBlock);
 HWY_EXPORT(DepthBlock);
 HWY_EXPORT(DepthRuns);
 HWY_EXPORT(DepthSmall);
+HWY_EXPORT(DepthSmallKernelOf);
 HWY_EXPORT(Farthest);
 HWY_EXPORT(FillFar);
 
@@ -519,6 +522,8 @@ bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& 
                  std::uint64_t* undecided) {
     return HWY_DYNAMIC_DISPATCH(DepthSmall)(block, edges, plane, rows, undecided);
 }
+
+DepthSmallKernel depth_small_kernel() { return HWY_DYNAMIC_DISPATCH(DepthSmallKernelOf)(); }
 
 double farthest(const double* z, std::size_t n) {
     return HWY_DYNAMIC_DISPATCH(Farthest)(z, n);
