@@ -111,17 +111,19 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
             }
         }
     }
+    const int height = rect.j1 - rect.j0 + 1;
+    if (samples == 1) {  // rows contiguous on both sides
+        const std::size_t at = fb.index(rect.i0, rect.j0);
+        copy_out(tile.z.data(), tile.ids.data(), tile.cols, fb.depth.data() + at, fb.ids.data() + at,
+                 fb.viewport.width, width, height);
+        return;
+    }
     for (int j = rect.j0; j <= rect.j1; ++j)
         for (int s = 0; s < samples; ++s) {
             const std::int32_t* ids = tile.ids.data() + tile.at(s, j - rect.j0, 0);
             const double* z = tile.z.data() + tile.at(s, j - rect.j0, 0);
             std::int32_t* to_ids = fb.ids.data() + fb.index(rect.i0, j, s);
             double* to_depth = fb.depth.data() + fb.index(rect.i0, j, s);
-            if (samples == 1) {  // contiguous on both sides
-                std::copy(ids, ids + width, to_ids);
-                std::copy(z, z + width, to_depth);
-                continue;
-            }
             for (int k = 0; k < width; ++k) {
                 to_ids[k * samples] = ids[k];
                 to_depth[k * samples] = z[k];

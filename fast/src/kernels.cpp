@@ -3,6 +3,7 @@
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "kernels.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
 #include "kernels.h"
@@ -490,6 +491,31 @@ void FillFar(double* z, std::size_t n) {
     for (; k < n; ++k) z[k] = std::numeric_limits<double>::infinity();
 }
 
+// n values from `from` to `to`: the whole cache lines of `to` streamed, a vector of at most a line at a
+// time (the vector is then aligned to its size, as Stream needs), the rest stored one by one.
+template <class T>
+HWY_INLINE void StreamRow(const T* from, T* to, std::size_t n) {
+    constexpr std::size_t kLine = 64, kPerLine = kLine / sizeof(T);
+    const hn::CappedTag<T, kPerLine> d;
+    const std::size_t lanes = hn::Lanes(d);
+    const std::size_t misaligned = reinterpret_cast<std::uintptr_t>(to) % kLine;
+    const std::size_t head = std::min(n, misaligned == 0 ? 0 : (kLine - misaligned) / sizeof(T));
+    std::size_t k = 0;
+    for (; k < head; ++k) to[k] = from[k];
+    for (; k + kPerLine <= n; k += kPerLine)
+        for (std::size_t v = 0; v < kPerLine; v += lanes) hn::Stream(hn::LoadU(d, from + k + v), d, to + k + v);
+    for (; k < n; ++k) to[k] = from[k];
+}
+
+void CopyOut(const double* z, const std::int32_t* ids, std::ptrdiff_t stride, double* to_z, std::int32_t* to_ids,
+             std::ptrdiff_t to_stride, int width, int rows) {
+    for (int r = 0; r < rows; ++r) {
+        StreamRow(z + r * stride, to_z + r * to_stride, static_cast<std::size_t>(width));
+        StreamRow(ids + r * stride, to_ids + r * to_stride, static_cast<std::size_t>(width));
+    }
+    hwy::FlushStream();
+}
+
 }  // namespace rast::fast::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -503,6 +529,7 @@ HWY_EXPORT(DepthSmall);
 HWY_EXPORT(DepthSmallKernelOf);
 HWY_EXPORT(Farthest);
 HWY_EXPORT(FillFar);
+HWY_EXPORT(CopyOut);
 
 void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t* covered) {
     HWY_DYNAMIC_DISPATCH(CoverageBlock)(block, coverage, covered);
@@ -530,6 +557,11 @@ double farthest(const double* z, std::size_t n) {
 }
 
 void fill_far(double* z, std::size_t n) { HWY_DYNAMIC_DISPATCH(FillFar)(z, n); }
+
+void copy_out(const double* z, const std::int32_t* ids, std::ptrdiff_t stride, double* to_z, std::int32_t* to_ids,
+              std::ptrdiff_t to_stride, int width, int rows) {
+    HWY_DYNAMIC_DISPATCH(CopyOut)(z, ids, stride, to_z, to_ids, to_stride, width, rows);
+}
 
 }  // namespace rast::fast::detail
 #endif  // HWY_ONCE

@@ -128,4 +128,13 @@ double farthest(const double* z, std::size_t n);
 // the library's baseline, stored 16 bytes at a time, a tenth of the big triangles' time outside the kernels.
 void fill_far(double* z, std::size_t n);
 
+// A tile's rows copied out to the framebuffer: for r < rows and k < width, to_z[r * to_stride + k] =
+// z[r * stride + k], and the ids alike. The destination's whole cache lines are written by non-temporal
+// stores, which do not first read the line into the cache (the framebuffer is written once a render and
+// not read by it: its 12 MB at 1024 x 1024 were read as well as written); the partial lines at a row's
+// ends, which the next tile writes the rest of, by ordinary stores. Visible to other threads once it
+// returns.
+void copy_out(const double* z, const std::int32_t* ids, std::ptrdiff_t stride, double* to_z, std::int32_t* to_ids,
+              std::ptrdiff_t to_stride, int width, int rows);
+
 }  // namespace rast::fast::detail

@@ -1,6 +1,6 @@
 // The SIMD depth tests (depth_block for every coverage kind, depth_runs, depth_small) against the scalar
 // one of scalar.h, sample by sample, on each SIMD target: the same stored depths, bounds and ids
-// afterwards, and the same samples left undecided.
+// afterwards, and the same samples left undecided. Then the tile's whole-buffer kernels.
 #include "kernels.h"
 #include "scalar.h"
 
@@ -300,6 +300,56 @@ TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
                 EXPECT_EQ(farthest(z.data() + offset, n), 2.0) << n << " from " << offset;
                 z[offset + rng() % n] = kInf;
                 EXPECT_EQ(farthest(z.data() + offset, n), kInf) << n << " from " << offset;
+            }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+// The first element of `values` at the start of a cache line (within its first 64 bytes).
+template <class T>
+T* line_start(T* values) {
+    const auto misaligned = reinterpret_cast<std::uintptr_t>(values) % 64;
+    return values + (misaligned == 0 ? 0 : (64 - misaligned) / sizeof(T));
+}
+
+// copy_out at every alignment of the destination within a cache line (a row streams its whole lines and
+// stores the rest), widths below a line and over several, and strides that move each row's alignment:
+// exactly the rows' depths and ids land, and nothing around them is touched.
+TEST(DepthKernels, CopyOutWritesExactlyTheTileRowsOnEveryTarget) {
+    constexpr double kUntouched = 7.5;
+    constexpr std::int32_t kUntouchedId = -7;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        for (int width = 0; width <= 40; ++width)
+            for (int rows = 1; rows <= 3; ++rows) {
+                const std::ptrdiff_t stride = width + 3, to_stride = width + 5;
+                std::vector<double> z(static_cast<std::size_t>(rows * stride));
+                std::vector<std::int32_t> ids(z.size());
+                for (std::size_t k = 0; k < z.size(); ++k) {
+                    z[k] = 0.25 + static_cast<double>(k);
+                    ids[k] = static_cast<std::int32_t>(k);
+                }
+                // From a line's start, so that offsets 0 to 15 take the destination's rows through every
+                // alignment of their depths and ids within a line.
+                for (std::ptrdiff_t offset = 0; offset < 16; ++offset) {
+                    const std::size_t size = static_cast<std::size_t>(offset + rows * to_stride + 16);
+                    std::vector<double> z_buffer(size + 8);
+                    std::vector<std::int32_t> id_buffer(size + 16);
+                    double* to_z = line_start(z_buffer.data());
+                    std::int32_t* to_ids = line_start(id_buffer.data());
+                    std::fill_n(to_z, size, kUntouched);
+                    std::fill_n(to_ids, size, kUntouchedId);
+                    copy_out(z.data(), ids.data(), stride, to_z + offset, to_ids + offset, to_stride, width, rows);
+                    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(size); ++k) {
+                        const std::ptrdiff_t r = (k - offset) / to_stride, col = (k - offset) % to_stride;
+                        const bool inside = k >= offset && r < rows && col < width;
+                        ASSERT_EQ(to_z[k], inside ? z[r * stride + col] : kUntouched)
+                            << "width " << width << ", rows " << rows << ", offset " << offset << ", slot " << k;
+                        ASSERT_EQ(to_ids[k], inside ? ids[r * stride + col] : kUntouchedId)
+                            << "width " << width << ", rows " << rows << ", offset " << offset << ", slot " << k;
+                    }
+                }
             }
     }
     hwy::SetSupportedTargetsForTest(0);
