@@ -212,6 +212,26 @@ TEST(PlaneBound, HierarchicalZDecidesExactlyBeyondTheMargin) {
     }
 }
 
+// Hierarchical z takes the plane at the box's corner nearest the viewer, whatever its slopes' signs: over pixels
+// [0, 3] x [0, 3] (samples 0.5 to 3.5 each way), a slope of +1/64 in x is nearest at x = 0.5 (+1/128 from
+// x0 = 0), -1/64 at x = 3.5 (-7/128); in y, +-1/128 give +1/256 and -7/256. z0 puts that corner at
+// f (err + stored_err) beyond the far depth; any other corner is at least 3/128 farther.
+TEST(PlaneBound, HierarchicalZTakesTheNearestCornerForEverySlope) {
+    const Context& c = plane_context();
+    TileBuffer tile;
+    tile.fit(1, 1, c.vp);
+    tile.stored_err = 3e-13;
+    tile.far = 0.25;
+    for (const double a : {1.0 / 64, -1.0 / 64})
+        for (const double b : {1.0 / 128, -1.0 / 128})
+            for (const double f : {0.9, 1.1}) {
+                const double nearest_terms = (a > 0 ? 1.0 / 128 : -7.0 / 128) + (b > 0 ? 1.0 / 256 : -7.0 / 256);
+                const double err = 1e-13, z0 = tile.far + f * (err + tile.stored_err) - nearest_terms;
+                const Plane p{0, 0, z0, a, b, err};
+                EXPECT_EQ(behind_tile(p, c, tile, 0, 3, 0, 3), f > 1) << "a " << a << ", b " << b << ", f " << f;
+            }
+}
+
 // A depth the exact arithmetic rounded to nearest (stored where a plane's bound overflows), by hand: just
 // short of the midpoint above 1, whose nearest double is 1, the error is all but u; just short of half the
 // least subnormal, whose nearest double is 0, all but half of it.
