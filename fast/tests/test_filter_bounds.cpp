@@ -196,15 +196,21 @@ TEST(PlaneBound, CoplanarTwinsStraddleAMidpoint) {
     EXPECT_GT(halved, 1.0);
 }
 
+// A tile for hierarchical z: every depth it holds at most 0.25, within 3e-13 of its exact value.
+TileBuffer tile_with_far_depth(const Context& c) {
+    TileBuffer tile;
+    tile.fit(1, 1, c.vp);
+    tile.stored_err = 3e-13;
+    tile.far = 0.25;
+    return tile;
+}
+
 // Hierarchical z uses the bound as the depth test does (kernels.h): a triangle is behind a tile only when
 // its nearest computed depth is beyond the tile's far depth by more than the two bounds together. By
 // hand, nearest - far = f (err + stored_err): a margin scaled either way fails.
 TEST(PlaneBound, HierarchicalZDecidesExactlyBeyondTheMargin) {
     const Context& c = plane_context();
-    TileBuffer tile;
-    tile.fit(1, 1, c.vp);
-    tile.stored_err = 3e-13;
-    tile.far = 0.25;
+    const TileBuffer tile = tile_with_far_depth(c);
     for (const double f : {-1.0, 0.5, 0.9, 0.99, 1.01, 1.1, 2.0}) {
         // A flat plane: its nearest depth over any box is z0.
         const Plane p{0, 0, tile.far + f * (1e-13 + tile.stored_err), 0, 0, 1e-13};
@@ -218,10 +224,7 @@ TEST(PlaneBound, HierarchicalZDecidesExactlyBeyondTheMargin) {
 // f (err + stored_err) beyond the far depth; any other corner is at least 3/128 farther.
 TEST(PlaneBound, HierarchicalZTakesTheNearestCornerForEverySlope) {
     const Context& c = plane_context();
-    TileBuffer tile;
-    tile.fit(1, 1, c.vp);
-    tile.stored_err = 3e-13;
-    tile.far = 0.25;
+    const TileBuffer tile = tile_with_far_depth(c);
     for (const double a : {1.0 / 64, -1.0 / 64})
         for (const double b : {1.0 / 128, -1.0 / 128})
             for (const double f : {0.9, 1.1}) {
