@@ -111,11 +111,10 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
             }
         }
     }
-    const int height = rect.j1 - rect.j0 + 1;
     if (samples == 1) {  // rows contiguous on both sides
         const std::size_t at = fb.index(rect.i0, rect.j0);
         copy_out(tile.z.data(), tile.ids.data(), tile.cols, fb.depth.data() + at, fb.ids.data() + at,
-                 fb.viewport.width, width, height);
+                 fb.viewport.width, width, rect.j1 - rect.j0 + 1);
         return;
     }
     for (int j = rect.j0; j <= rect.j1; ++j)

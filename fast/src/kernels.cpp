@@ -492,7 +492,8 @@ void FillFar(double* z, std::size_t n) {
 }
 
 // n values from `from` to `to`: the whole cache lines of `to` streamed, a vector of at most a line at a
-// time (the vector is then aligned to its size, as Stream needs), the rest stored one by one.
+// time (the vector is then aligned to its size, as Stream needs: `to`, an array's, is aligned to T), the
+// rest stored one by one.
 template <class T>
 HWY_INLINE void StreamRow(const T* from, T* to, std::size_t n) {
     constexpr std::size_t kLine = 64, kPerLine = kLine / sizeof(T);

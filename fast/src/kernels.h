@@ -130,10 +130,10 @@ void fill_far(double* z, std::size_t n);
 
 // A tile's rows copied out to the framebuffer: for r < rows and k < width, to_z[r * to_stride + k] =
 // z[r * stride + k], and the ids alike. The destination's whole cache lines are written by non-temporal
-// stores, which do not first read the line into the cache (the framebuffer is written once a render and
-// not read by it: its 12 MB at 1024 x 1024 were read as well as written); the partial lines at a row's
-// ends, which the next tile writes the rest of, by ordinary stores. Visible to other threads once it
-// returns.
+// stores, which do not first read the line into the cache (the tiles' pass writes the framebuffer once
+// and does not read it: its 12 MB at 1024 x 1024 were read as well as written); the partial lines at a
+// row's ends, which the next tile writes the rest of, by ordinary stores. The streamed stores are fenced
+// before it returns, so the tiles' loop's join publishes them as it does the others.
 void copy_out(const double* z, const std::int32_t* ids, std::ptrdiff_t stride, double* to_z, std::int32_t* to_ids,
               std::ptrdiff_t to_stride, int width, int rows);
 

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <limits>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -303,6 +304,20 @@ TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
             }
     }
     hwy::SetSupportedTargetsForTest(0);
+}
+
+// The kernel a render resolves once (Context::depth_small) is the selected target's own: a different
+// function on each target, as the tests that compare the targets' output need.
+TEST(DepthKernels, SmallKernelIsTheSelectedTargets) {
+    std::set<DepthSmallKernel> kernels;
+    std::size_t targets = 0;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        EXPECT_TRUE(kernels.insert(depth_small_kernel()).second) << hwy::TargetName(target);
+        ++targets;
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    EXPECT_EQ(kernels.size(), targets);
 }
 
 // The first element of `values` at the start of a cache line (within its first 64 bytes).

@@ -49,6 +49,7 @@ Triangle triangle_of(const PlaneCase& k) {
     return t;
 }
 
+// Its depth_small is the kernel of the targets first in force: the tests here do not call it.
 const Context& plane_context() {
     static const Context c = make_context<Fault::none>({1024, 1024}, 1, Precision::fixed8);
     return c;
