@@ -310,14 +310,11 @@ TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
 // function on each target, as the tests that compare the targets' output need.
 TEST(DepthKernels, SmallKernelIsTheSelectedTargets) {
     std::set<DepthSmallKernel> kernels;
-    std::size_t targets = 0;
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
         EXPECT_TRUE(kernels.insert(depth_small_kernel()).second) << hwy::TargetName(target);
-        ++targets;
     }
     hwy::SetSupportedTargetsForTest(0);
-    EXPECT_EQ(kernels.size(), targets);
 }
 
 // The first element of `values` at the start of a cache line (within its first 64 bytes).
