@@ -90,21 +90,57 @@ template <Fault F, class CornersOf, class BlockDepth>
     }
 }
 
+// A big triangle's rows of its box in a tile as hierarchical z's subtiles trim them: keep[r] holds the
+// columns of row j0 + r (bit k: pixel i0 + k) from the first subtile of its band the triangle may be in
+// front in to the last, none in a band it is behind in everywhere. One run a row, as the kernels take
+// it: hidden subtiles between open ones are tested all the same (the depth test decides them farther).
+struct TrimmedRows {
+    bool trimmed = false;  // whether any row lost a column
+    std::uint64_t keep[kTile];
+    // From the subtiles `open` (in_front_subtiles' bits) of pixels [i0, i1] x [j0, j1] of the tile at rect.
+    void trim(std::uint64_t open, const TileRect& rect, int i0, int i1, int j0, int j1) {
+        const std::uint64_t whole = first_bits(i1 - i0 + 1);
+        trimmed = false;
+        for (int y = j0; y <= j1;) {
+            const int by = (y - rect.j0) / kSubtile, end = std::min(j1 + 1, rect.j0 + (by + 1) * kSubtile);
+            const std::uint64_t band = open >> (kSubtiles * by) & first_bits(kSubtiles);
+            std::uint64_t row = 0;
+            if (band != 0) {
+                const int first = std::countr_zero(band), last = 63 - std::countl_zero(band);
+                const int x0 = std::max(i0, rect.i0 + first * kSubtile);
+                const int x1 = std::min(i1, rect.i0 + (last + 1) * kSubtile - 1);
+                row = first_bits(x1 - x0 + 1) << (x0 - i0);
+            }
+            trimmed = trimmed || row != whole;
+            for (; y < end; ++y) keep[y - j0] = row;
+        }
+    }
+};
+
 // What every path shares: triangle `id` (its depth plane) into the tile's z-buffer over pixels
-// [i0, i1] x [j0, j1] of its bounding box, behind hierarchical z, by compose_blocks. Always inlined: as
-// a call of its own, its eleven arguments and the plane went through the stack, a tenth of a small
-// triangle's setup.
+// [i0, i1] x [j0, j1] of its bounding box, behind hierarchical z, by compose_blocks; with `rows`, behind
+// its subtiles too, which trim the rows (a big triangle: a small one's box meets a subtile or a few).
+// Always inlined: as a call of its own, its eleven arguments and the plane went through the stack, a
+// tenth of a small triangle's setup.
 template <Fault F, class CornersOf, class BlockDepth>
 [[gnu::always_inline]] inline void rasterize_blocks(CornersOf corners, const Plane& pl, std::int32_t id, int i0,
                                                     int i1, int j0, int j1, const TileRect& rect, TileBuffer& tile,
-                                                    const SceneView& scene, BlockDepth depth) {
+                                                    const SceneView& scene, BlockDepth depth,
+                                                    TrimmedRows* rows = nullptr) {
     if constexpr (F == Fault::halved_depth_bound) {
         Plane halved = pl;
         halved.err /= 2;
-        return rasterize_blocks<Fault::none>(corners, halved, id, i0, i1, j0, j1, rect, tile, scene, depth);
+        return rasterize_blocks<Fault::none>(corners, halved, id, i0, i1, j0, j1, rect, tile, scene, depth, rows);
     }
     const Context& c = scene.c;
     if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return;
+    if (rows) {
+        if (tile.subtiles_due)
+            tile.refresh_subtiles(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
+        const std::uint64_t open = in_front_subtiles(pl, c, tile, rect.i0, rect.j0, i0, i1, j0, j1);
+        if (open == 0) return;
+        rows->trim(open, rect, i0, i1, j0, j1);
+    }
     count_block(tile, static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size(), rect, c);
     tile.admit(pl.err);
     const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, id};
@@ -121,6 +157,11 @@ inline bool fixed_block_depth(const std::array<FixedEdge, 3>& edges, const Conte
                              undecided);
 }
 
+// A big triangle's box in a tile is tested subtile by subtile from this many pixels on: the test and the
+// trimming cost a few hundred instructions a tile, about as many as the depth test of the samples a
+// medium-sized triangle (64 pixels across) has in a tile.
+inline constexpr int kSubtileBox = 2048;
+
 // Triangle t, named id, into the tile's z-buffer.
 template <Fault F>
 void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
@@ -131,25 +172,31 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     if (cls == TileClass::reject) return;
     std::span<const Span> wide;  // a partial tile's, found at the first sample index, past hierarchical z
     std::uint64_t masks[kTile];
-    rasterize_blocks<F>([&t]() -> const Corners& { return t.p.v; }, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
-                        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows,
-                            std::uint64_t* undecided) {
-                            const bool scalar = b.width * b.rows <= kScalarSamples;
-                            const bool partial = cls == TileClass::partial;
-                            if (partial && t.p.path == Path::wide && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
-                            if (partial && t.p.path == Path::fixed && scalar)
-                                return fixed_block_depth(t.fixed, c, b, s, plane, rows, undecided);
-                            if (partial && t.p.path != Path::floating && !scalar) {
-                                // Exact rows, one run each: the fixed path's walked from row to row, the
-                                // wide path's from its spans.
-                                if (t.p.path == Path::fixed) fixed_row_masks(t.fixed, c, b, s, masks);
-                                else coverage_of<F>(t, c, b, s, wide, masks);
-                                return depth_runs(b, masks, plane, rows, undecided);
-                            }
-                            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, wide, masks) : Coverage{};
-                            return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
-                                          : depth_block(b, cov, plane, rows, undecided);
-                        });
+    TrimmedRows trim;
+    rasterize_blocks<F>(
+        [&t]() -> const Corners& { return t.p.v; }, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
+        [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided)
+            __attribute__((always_inline)) {
+            const bool scalar = b.width * b.rows <= kScalarSamples;
+            const bool partial = cls == TileClass::partial;
+            if (partial && t.p.path == Path::wide && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
+            if (partial && t.p.path == Path::fixed && scalar)
+                return fixed_block_depth(t.fixed, c, b, s, plane, rows, undecided);
+            if (partial && t.p.path != Path::floating && !scalar) {
+                // Exact rows, one run each: the fixed path's walked from row to row, the wide path's from
+                // its spans; each trimmed to its subtiles (still one run).
+                if (t.p.path == Path::fixed) fixed_row_masks(t.fixed, c, b, s, masks);
+                else coverage_of<F>(t, c, b, s, wide, masks);
+                if (trim.trimmed)
+                    for (int r = 0; r < b.rows; ++r) masks[r] &= trim.keep[r];
+                return depth_runs(b, masks, plane, rows, undecided);
+            }
+            if (!partial && !scalar && trim.trimmed) return depth_runs(b, trim.keep, plane, rows, undecided);
+            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, wide, masks) : Coverage{};
+            return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
+                          : depth_block(b, cov, plane, rows, undecided);
+        },
+        t.subtiles && (i1 - i0 + 1) * (j1 - j0 + 1) >= kSubtileBox ? &trim : nullptr);
 }
 
 // A small triangle's binned record: its box within the tile.

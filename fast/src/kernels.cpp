@@ -482,6 +482,54 @@ double Farthest(const double* z, std::size_t n) {
     return result;
 }
 
+void FarthestSubtiles(const double* z, std::ptrdiff_t stride, int width, int rows, double* far) {
+    const hn::CappedTag<double, kSubtile> d;  // a subtile's row in one vector, or in a few
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const auto lowest = hn::Set(d, -std::numeric_limits<double>::infinity());
+    for (int x = 0; x < width; x += kSubtile) {
+        const int n = std::min(kSubtile, width - x);
+        auto largest = lowest;
+        for (int r = 0; r < rows; ++r)
+            for (int l = 0; l < n; l += lanes)
+                largest = hn::Max(largest, hn::IfThenElse(hn::FirstN(d, static_cast<std::size_t>(n - l)),
+                                                          hn::LoadU(d, z + r * stride + x + l), lowest));
+        far[x / kSubtile] = hn::GetLane(hn::MaxOfLanes(d, largest));
+    }
+}
+
+std::uint64_t OpenSubtiles(const SubtileTest& t, const double* far) {
+    const hn::CappedTag<double, kSubtiles> d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const bool low_x = t.a >= 0, low_y = t.b >= 0;
+    const auto z0 = hn::Set(d, t.z0), a = hn::Set(d, t.a), x0 = hn::Set(d, t.x0), margin = hn::Set(d, t.margin);
+    // Each lane's subtile's first column.
+    const auto column = hn::Add(hn::Mul(hn::Iota(d, 0.0), hn::Set(d, double(kSubtile))), hn::Set(d, double(t.ti)));
+    const auto i0 = hn::Set(d, double(t.i0)), i1 = hn::Set(d, double(t.i1));
+    const int by0 = (t.j0 - t.tj) / kSubtile, by1 = (t.j1 - t.tj) / kSubtile;
+    const std::uint64_t columns = first_bits((t.i1 - t.ti) / kSubtile + 1) & ~first_bits((t.i0 - t.ti) / kSubtile);
+    std::uint64_t open = 0;
+    for (int k = 0; k < kSubtiles; k += lanes) {
+        // The nearest corner's x in each subtile column, within the box (exact: integers and sixteenths).
+        const auto first = hn::Add(column, hn::Set(d, double(k * kSubtile)));
+        const auto px = low_x ? hn::Add(hn::Max(first, i0), hn::Set(d, t.ox_min))
+                              : hn::Add(hn::Min(hn::Add(first, hn::Set(d, double(kSubtile - 1))), i1),
+                                        hn::Set(d, t.ox_max));
+        const auto a_dx = hn::Mul(a, hn::Sub(px, x0));
+        for (int by = by0; by <= by1; ++by) {
+            const int row = t.tj + by * kSubtile;  // the band's first
+            const double py = low_y ? double(std::max(t.j0, row)) + t.oy_min
+                                    : double(std::min(t.j1, row + kSubtile - 1)) + t.oy_max;
+            const auto nearest = hn::Add(z0, hn::Add(a_dx, hn::Set(d, t.b * (py - t.y0))));
+            const auto behind = hn::Gt(hn::Sub(nearest, hn::LoadU(d, far + by * kSubtiles + k)), margin);
+            const std::uint64_t lanes_bits = first_bits(lanes);
+            open |= (~mask_bits(d, behind) & lanes_bits) << (by * kSubtiles + k);
+        }
+    }
+    std::uint64_t box = 0;
+    for (int by = by0; by <= by1; ++by) box |= columns << (by * kSubtiles);
+    return open & box;
+}
+
 void FillFar(double* z, std::size_t n) {
     const D d;
     const std::size_t lanes = hn::Lanes(d);
@@ -529,6 +577,8 @@ HWY_EXPORT(DepthRuns);
 HWY_EXPORT(DepthSmall);
 HWY_EXPORT(DepthSmallKernelOf);
 HWY_EXPORT(Farthest);
+HWY_EXPORT(FarthestSubtiles);
+HWY_EXPORT(OpenSubtiles);
 HWY_EXPORT(FillFar);
 HWY_EXPORT(CopyOut);
 
@@ -553,8 +603,16 @@ bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& 
 
 DepthSmallKernel depth_small_kernel() { return HWY_DYNAMIC_DISPATCH(DepthSmallKernelOf)(); }
 
+std::uint64_t open_subtiles(const SubtileTest& t, const double* far) {
+    return HWY_DYNAMIC_DISPATCH(OpenSubtiles)(t, far);
+}
+
 double farthest(const double* z, std::size_t n) {
     return HWY_DYNAMIC_DISPATCH(Farthest)(z, n);
+}
+
+void farthest_subtiles(const double* z, std::ptrdiff_t stride, int width, int rows, double* far) {
+    HWY_DYNAMIC_DISPATCH(FarthestSubtiles)(z, stride, width, rows, far);
 }
 
 void fill_far(double* z, std::size_t n) { HWY_DYNAMIC_DISPATCH(FillFar)(z, n); }

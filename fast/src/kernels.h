@@ -120,9 +120,36 @@ using DepthSmallKernel = bool (*)(const Block&, const SmallEdges&, const DepthPl
                                   std::uint64_t*);
 DepthSmallKernel depth_small_kernel();
 
+// Hierarchical z's subtiles: squares of kSubtile x kSubtile pixels, kSubtiles each way in a row of
+// kRowLanes, counted from its first pixel (a tile's: tile_buffer.h). A subtile's row is one AVX-512
+// vector of depths.
+inline constexpr int kSubtile = 8;
+inline constexpr int kSubtiles = kRowLanes / kSubtile;
+
+// A plane against the far depths of the subtiles its box meets (hierarchical z): z = z0 + (a (px - x0) +
+// b (py - y0)), margin = err + stored_err (the plane's and the stored depths' bounds, as in DepthPlane);
+// the sample offsets' extremes; the box, pixels [i0, i1] x [j0, j1], in the subtiles from pixel (ti, tj).
+struct SubtileTest {
+    double z0, a, x0, b, y0, margin;
+    double ox_min, ox_max, oy_min, oy_max;
+    int ti, tj, i0, i1, j0, j1;
+};
+
+// The subtiles of the box where the plane may be in front of a stored depth, as bit kSubtiles by + bx
+// for subtile (bx, by): those where its value at the nearest corner of its samples' rectangle in the box
+// (the corner by the slopes' signs) minus the subtile's far depth far[kSubtiles by + bx] is not beyond
+// the margin. The whole tile's test's arithmetic (behind_tile, tile_buffer.h), lane by lane.
+std::uint64_t open_subtiles(const SubtileTest& t, const double* far);
+
 // The largest z[k] for k < n (+infinity when any slot is empty). The maximum is exact, so the order the
 // lanes take does not matter.
 double farthest(const double* z, std::size_t n);
+
+// The largest depth of each subtile column of `rows` rows `stride` apart: far[k] = max z[r * stride + i]
+// for r < rows and i in [kSubtile k, min(kSubtile (k + 1), width)), for every k < ceil(width / kSubtile)
+// (+infinity where a slot is empty). The maximum is exact, so the order the lanes take does not matter.
+// Loads up to a subtile past the last row's width, as the depth tests do: the buffer needs that padding.
+void farthest_subtiles(const double* z, std::ptrdiff_t stride, int width, int rows, double* far);
 
 // z[k] = +infinity (an empty sample) for k < n, in the widest stores there are: std::fill_n, compiled for
 // the library's baseline, stored 16 bytes at a time, a tenth of the big triangles' time outside the kernels.

@@ -106,6 +106,9 @@ struct Setup {
     Placed p;
     std::array<FixedEdge, 3> fixed{};
     Plane plane{};
+    // Whether hierarchical z tests the subtiles of its tiles (tile_buffer.h): a big triangle that covers a
+    // good part of its bounding box (a sliver's nearest corner in a subtile it passes says little).
+    bool subtiles = false;
     bool classify_tiles = true;  // false: every tile is partial (a small triangle gains nothing from the test)
     std::array<FloatEdge, 3> flt{};
     // Float modes: a tile whose samples all have an exact edge function beyond +-margin on the same
@@ -372,6 +375,15 @@ inline double float_margin(const Corners& v, const Context& c) {
            (1 + 0x1p-40);
 }
 
+// Whether the triangle with corners v covers at least an eighth of its bounding box (a fat one covers
+// half at most), in doubles: a heuristic, whose rounding does not matter.
+inline bool fills_box(const Corners& v) {
+    const auto [x_lo, x_hi] = std::minmax({v[0].x, v[1].x, v[2].x});
+    const auto [y_lo, y_hi] = std::minmax({v[0].y, v[1].y, v[2].y});
+    const double twice_area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    return 4 * std::abs(twice_area) >= (x_hi - x_lo) * (y_hi - y_lo);
+}
+
 // classify_tiles: also compute what whole-tile trivial accept / reject needs (worth it for a triangle
 // that spans tiles; a small one is classified by its edge functions alone).
 template <Fault F>
@@ -380,6 +392,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
     s.p = placed;
     s.classify_tiles = classify_tiles;
     const Corners& v = placed.v;
+    s.subtiles = classify_tiles && fills_box(v);
 
     switch (placed.path) {
         case Path::floating: {

@@ -97,6 +97,8 @@ struct alignas(64) TileBuffer {
         stored_err = 0;
         per_sample = false;
         far = std::numeric_limits<double>::infinity();
+        std::fill_n(subtile_far, kSubtiles * kSubtiles, far);
+        subtiles_due = false;
         since_far = 0;
     }
     // A triangle whose depths have error bound e is about to be composed. The tile keeps one bound for
@@ -106,7 +108,7 @@ struct alignas(64) TileBuffer {
     // for it: from the first such triangle on, the tile keeps a bound per sample, the ones stored before
     // with the tile's. An infinite bound decides nothing: such a triangle's depths are all stored by
     // the exact comparison, each with its own bound (stored()).
-    void admit(double e) {
+    [[gnu::always_inline]] void admit(double e) {
         constexpr double kSpread = 0x1p20;
         if (!per_sample && stored_err > 0 && !(e <= kSpread * stored_err && stored_err <= kSpread * e)) {
             err.resize(size + kRowLanes);
@@ -124,9 +126,11 @@ struct alignas(64) TileBuffer {
         return {z.data() + at, per_sample ? err.data() + at : nullptr, ids.data() + at, cols};
     }
     // far := the largest z over the samples of pixels [0, width) x [0, height), +infinity while any is
-    // empty. Exact stored depths only ever come nearer, so an old far, with stored_err, still bounds them.
+    // empty (read only up to the first empty row); subtile_far is then due. Exact stored depths only ever
+    // come nearer, so an old far, with stored_err, still bounds them.
     void refresh_far(int samples, int width, int height) {
         since_far = 0;
+        subtiles_due = true;
         double largest = -std::numeric_limits<double>::infinity();
         for (int s = 0; s < samples; ++s)
             for (int row = 0; row < height; ++row) {
@@ -134,6 +138,23 @@ struct alignas(64) TileBuffer {
                 if (largest == std::numeric_limits<double>::infinity()) return;
             }
         far = largest;
+    }
+    // subtile_far, and far with it, brought up to date over the same samples: the whole tile read, for
+    // the triangles that test subtiles alone.
+    void refresh_subtiles(int samples, int width, int height) {
+        subtiles_due = false;
+        far = -std::numeric_limits<double>::infinity();
+        for (int y = 0; y < height; y += kSubtile) {
+            double* band = subtile_far + y / kSubtile * kSubtiles;
+            const int rows = std::min(kSubtile, height - y);
+            for (int s = 0; s < samples; ++s) {
+                double of_s[kSubtiles];
+                farthest_subtiles(&z[at(s, y, 0)], cols, width, rows, s == 0 ? band : of_s);
+                if (s > 0)
+                    for (int k = 0; k * kSubtile < width; ++k) band[k] = std::max(band[k], of_s[k]);
+            }
+            for (int k = 0; k * kSubtile < width; ++k) far = std::max(far, band[k]);
+        }
     }
     std::size_t at(int s, int row, int col) const {
         return (static_cast<std::size_t>(s) * rows + row) * cols + col;
@@ -147,7 +168,13 @@ struct alignas(64) TileBuffer {
     bool per_sample = false;
     ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
     BandSpans wide;
+    // Hierarchical z: the largest z of the tile's stored samples (+infinity while any is empty), and of
+    // each subtile's (subtile_far[kSubtiles by + bx] for pixels [kSubtile bx, kSubtile (bx + 1)) x
+    // [kSubtile by, kSubtile (by + 1)) of the tile), as of their last refresh.
+    static_assert(kSubtiles * kSubtile == kTile && kSubtiles * kSubtiles <= 64, "a subtile is a bit of a mask");
     double far = std::numeric_limits<double>::infinity();
+    double subtile_far[kSubtiles * kSubtiles];
+    bool subtiles_due = false;  // whether refresh_far ran since refresh_subtiles
     std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
 
 private:
@@ -155,7 +182,8 @@ private:
 };
 
 // A tile's far depth is brought up to date once blocks of this many times its samples were rasterized
-// into it: the refresh reads the tile once, amortized over at least as many block samples.
+// into it (its subtiles' when a triangle next tests them): the refresh reads the tile once, amortized over
+// at least as many block samples.
 inline constexpr std::size_t kFarRefresh = 4;
 
 // Hierarchical z: whether the triangle is behind everything stored in the tile at every sample of
@@ -177,6 +205,17 @@ inline bool behind_tile(const Plane& p, const Context& c, const TileBuffer& tile
     const double py = nearer(p.b >= 0, j0 + c.oy_min, j1 + c.oy_max);
     const double nearest = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0));
     return nearest - tile.far > p.err + tile.stored_err;
+}
+
+// The subtiles whose part of [i0, i1] x [j0, j1] (pixels of the tile whose corner is pixel (ti, tj)) the
+// triangle may be in front in, not behind everything stored there as behind_tile decides it for the whole
+// tile, as bit kSubtiles by + bx for subtile (bx, by) (open_subtiles): a big triangle's box meets many
+// subtiles, and far behind some while in front in others, it is behind the tile's far depth nowhere.
+inline std::uint64_t in_front_subtiles(const Plane& p, const Context& c, const TileBuffer& tile, int ti, int tj,
+                                       int i0, int i1, int j0, int j1) {
+    const SubtileTest test{p.z0,     p.a,      p.x0,     p.b, p.y0, p.err + tile.stored_err,
+                           c.ox_min, c.ox_max, c.oy_min, c.oy_max, ti, tj, i0, i1, j0, j1};
+    return open_subtiles(test, tile.subtile_far);
 }
 
 }  // namespace rast::fast::detail

@@ -306,6 +306,44 @@ TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
     hwy::SetSupportedTargetsForTest(0);
 }
 
+// farthest_subtiles answers each subtile column's largest depth over exactly its rows and columns: every
+// width and row count of a tile, the largest value of subtile k planted at a random place as 2 + k, and
+// everything outside the rows and columns (10, above them all) ignored; an empty slot makes its subtile's
+// +infinity, and only its; nothing written past the last subtile.
+TEST(DepthKernels, FarthestSubtilesTakesEachSubtilesLargestOnEveryTarget) {
+    constexpr double kInf = std::numeric_limits<double>::infinity(), kOutside = 10, kUnwritten = -5;
+    constexpr int kStride = 64;
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        std::mt19937_64 rng(20261127);
+        std::uniform_real_distribution<double> depth(-1, 1);
+        for (int width = 1; width <= kStride; ++width)
+            for (int rows = 1; rows <= kSubtile; ++rows) {
+                std::vector<double> z((rows + 1) * kStride + kSubtile, kOutside);
+                for (int r = 0; r < rows; ++r)
+                    for (int i = 0; i < width; ++i) z[r * kStride + i] = depth(rng);
+                const int subtiles = (width + kSubtile - 1) / kSubtile;
+                const auto slot_in = [&](int k) {
+                    const int columns = std::min(kSubtile, width - k * kSubtile);
+                    return static_cast<int>(rng() % rows) * kStride + k * kSubtile + static_cast<int>(rng() % columns);
+                };
+                for (int k = 0; k < subtiles; ++k) z[slot_in(k)] = 2 + k;
+                double far[kStride / kSubtile + 1];
+                std::fill(std::begin(far), std::end(far), kUnwritten);
+                farthest_subtiles(z.data(), kStride, width, rows, far);
+                for (int k = 0; k <= kStride / kSubtile; ++k)
+                    ASSERT_EQ(far[k], k < subtiles ? 2 + k : kUnwritten) << width << " x " << rows << ", subtile " << k;
+                const int empty = static_cast<int>(rng() % subtiles);
+                z[slot_in(empty)] = kInf;
+                farthest_subtiles(z.data(), kStride, width, rows, far);
+                for (int k = 0; k < subtiles; ++k)
+                    ASSERT_EQ(far[k], k == empty ? kInf : 2 + k) << width << " x " << rows << ", subtile " << k;
+            }
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
 // The kernel a render resolves once (Context::depth_small) is the selected target's own: a different
 // function on each target, as the tests that compare the targets' output need.
 TEST(DepthKernels, SmallKernelIsTheSelectedTargets) {

@@ -1,0 +1,189 @@
+// Hierarchical z's subtiles (tile_buffer.h, compose.h): which subtiles of a box a plane may be in front
+// in (open_subtiles, on every SIMD target, against the test's definition at all four corners), the rows
+// they leave to test (TrimmedRows), their far depths (TileBuffer::refresh_subtiles), and which triangles
+// test them (fills_box).
+#include "compose.h"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <random>
+
+namespace rast::fast::detail {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The plane's computed depth at a sample position, as every hierarchical-z test computes it.
+double depth_at(const SubtileTest& t, double px, double py) { return t.z0 + (t.a * (px - t.x0) + t.b * (py - t.y0)); }
+
+// The definition: subtile (bx, by) of the box is open unless the plane's smallest computed depth over the
+// corners of its samples' rectangle there is beyond far + margin. Rounding is monotone, so that smallest
+// corner is the one the slopes' signs pick.
+std::uint64_t open_by_corners(const SubtileTest& t, const double* far) {
+    std::uint64_t open = 0;
+    for (int by = 0; by < kSubtiles; ++by)
+        for (int bx = 0; bx < kSubtiles; ++bx) {
+            const int x0 = std::max(t.i0, t.ti + bx * kSubtile), x1 = std::min(t.i1, t.ti + bx * kSubtile + kSubtile - 1);
+            const int y0 = std::max(t.j0, t.tj + by * kSubtile), y1 = std::min(t.j1, t.tj + by * kSubtile + kSubtile - 1);
+            if (x0 > x1 || y0 > y1) continue;
+            double nearest = kInf;
+            for (const double px : {x0 + t.ox_min, x1 + t.ox_max})
+                for (const double py : {y0 + t.oy_min, y1 + t.oy_max}) nearest = std::min(nearest, depth_at(t, px, py));
+            const int at = by * kSubtiles + bx;
+            if (!(nearest - far[at] > t.margin)) open |= std::uint64_t{1} << at;
+        }
+    return open;
+}
+
+// Random boxes in a tile at (64, 128), planes of either slope sign (and level ones), far depths spread
+// around each subtile's nearest depth by a few margins (some +infinity): every target agrees with the
+// definition bit for bit, and both outcomes come up often.
+TEST(Subtiles, OpenSubtilesIsTheCornerTestOnEveryTarget) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        std::mt19937_64 rng(20261127);
+        std::uniform_real_distribution<double> unit(-1, 1);
+        long open_seen = 0, hidden_seen = 0;
+        for (int trial = 0; trial < 2000; ++trial) {
+            const int ti = 64, tj = 128;
+            int i0 = ti + static_cast<int>(rng() % 64), i1 = ti + static_cast<int>(rng() % 64);
+            int j0 = tj + static_cast<int>(rng() % 64), j1 = tj + static_cast<int>(rng() % 64);
+            if (i0 > i1) std::swap(i0, i1);
+            if (j0 > j1) std::swap(j0, j1);
+            const double slopes[] = {0.0, 1.0 / 64, -1.0 / 64, 0.37 * unit(rng)};
+            SubtileTest t{0.5,  slopes[rng() % 4], 100.25, slopes[rng() % 4], 150.75, 1e-3,
+                          0.125, 0.875,            0.0625, 0.9375,            ti,     tj,    i0, i1, j0, j1};
+            double far[kSubtiles * kSubtiles];
+            for (double& f : far) f = rng() % 8 == 0 ? kInf : depth_at(t, ti + 32, tj + 32) + 3 * t.margin * unit(rng);
+            const std::uint64_t expected = open_by_corners(t, far);
+            ASSERT_EQ(open_subtiles(t, far), expected) << "trial " << trial;
+            open_seen += std::popcount(expected);
+            int box = 0;
+            for (int by = (j0 - tj) / kSubtile; by <= (j1 - tj) / kSubtile; ++by)
+                box += (i1 - ti) / kSubtile - (i0 - ti) / kSubtile + 1;
+            hidden_seen += box - std::popcount(expected);
+        }
+        EXPECT_GT(open_seen, 2000);
+        EXPECT_GT(hidden_seen, 2000);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+// By hand, one sample at each pixel's centre, margin 0.25, a box of the whole tile at (0, 0) unless said.
+SubtileTest centred(double z0, double a, double x0, int i0, int i1, int j0, int j1) {
+    return {z0, a, x0, 0, 0.5, 0.25, 0.5, 0.5, 0.5, 0.5, 0, 0, i0, i1, j0, j1};
+}
+
+// A level plane at 0.75 is behind a subtile exactly when its far depth is below 0.5: at 0.5 the gap equals
+// the margin, which decides nothing; +infinity (an empty sample) never hides. Only the box's subtiles
+// answer.
+TEST(Subtiles, OpenSubtilesDecidesOnlyBeyondTheMargin) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        double far[kSubtiles * kSubtiles];
+        std::fill(std::begin(far), std::end(far), 0.0);
+        far[0] = 0.5;
+        far[1] = 0.5 - 0x1p-20;
+        far[2] = kInf;
+        far[3] = 0.75;
+        EXPECT_EQ(open_subtiles(centred(0.75, 0, 0, 0, 63, 0, 63), far), 0b1101u);
+        // Columns 8 to 23 of the first band: subtiles 1 and 2.
+        EXPECT_EQ(open_subtiles(centred(0.75, 0, 0, 8, 23, 0, 7), far), 0b100u);
+        // Rows 8 to 15: the second band, all at 0.
+        EXPECT_EQ(open_subtiles(centred(0.75, 0, 0, 0, 63, 8, 15), far), 0u);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+// A slope along x, far depths all 0, over the first band: with a = 1/64 and x0 = 0.5 the nearest sample
+// of subtile bx is its first, at depth bx / 8, open while bx / 8 <= 0.25 (bx <= 2); with a = -1/64 and
+// x0 = 63.5 it is its last, at (7 - bx) / 8, open from bx = 5. Taking the other corner turns both round.
+TEST(Subtiles, OpenSubtilesTakesEachSubtilesNearestCorner) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        double far[kSubtiles * kSubtiles];
+        std::fill(std::begin(far), std::end(far), 0.0);
+        EXPECT_EQ(open_subtiles(centred(0, 1.0 / 64, 0.5, 0, 63, 0, 7), far), 0b00000111u);
+        EXPECT_EQ(open_subtiles(centred(0, -1.0 / 64, 63.5, 0, 63, 0, 7), far), 0b11100000u);
+        // A box from column 12: subtile 1's part starts there, at depth 11.5 / 64 < 0.25: still open.
+        EXPECT_EQ(open_subtiles(centred(0, 1.0 / 64, 0.5, 12, 63, 0, 7), far), 0b00000110u);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+// The rows a big triangle's subtiles leave, by hand, in the tile at (64, 0) over the box of pixels
+// [70, 100] x [3, 20] (bands 0 to 2, subtile columns 0 to 4): band 0 open in columns 1 and 3 keeps pixels
+// 72 to 95 (bits 2 to 25 from 70); band 1 closed keeps nothing; band 2 open in columns 0 and 4 keeps the
+// whole row (70 to 100) of rows 16 to 20.
+TEST(Subtiles, TrimmedRowsKeepEachBandsOpenSpan) {
+    const TileRect rect{64, 127, 0, 63};
+    TrimmedRows rows;
+    const std::uint64_t open = 0b01010u | std::uint64_t{0b10001} << (2 * kSubtiles);
+    rows.trim(open, rect, 70, 100, 3, 20);
+    EXPECT_TRUE(rows.trimmed);
+    for (int r = 0; r <= 17; ++r) {
+        const int y = 3 + r;
+        const std::uint64_t expected = y < 8 ? first_bits(24) << 2 : y < 16 ? 0 : first_bits(31);
+        EXPECT_EQ(rows.keep[r], expected) << "row " << y;
+    }
+    // Every subtile of the box open: nothing trimmed.
+    rows.trim(~std::uint64_t{0}, rect, 70, 100, 3, 20);
+    EXPECT_FALSE(rows.trimmed);
+    for (int r = 0; r <= 17; ++r) EXPECT_EQ(rows.keep[r], first_bits(31)) << "row " << 3 + r;
+}
+
+// The far depths of a tile 20 x 12 pixels (the viewport's corner: subtiles 8 x 8, 8 x 8, 4 x 8 over
+// 8 x 4), 4 samples: each subtile's largest over all its samples, one planted at each in a different
+// sample plane; an empty sample makes its subtile's +infinity, and the tile's.
+TEST(Subtiles, RefreshTakesEachSubtilesLargestOverItsSamples) {
+    constexpr int kSamples = 4;
+    TileBuffer tile;
+    tile.fit(1, kSamples, {20, 12});
+    tile.clear();
+    std::mt19937_64 rng(20261127);
+    std::uniform_real_distribution<double> depth(-1, 1);
+    for (std::size_t k = 0; k < tile.size; ++k) tile.z[k] = depth(rng);
+    const int widths[] = {8, 8, 4}, heights[] = {8, 4};
+    for (int by = 0; by < 2; ++by)
+        for (int bx = 0; bx < 3; ++bx) {
+            const int s = (by * 3 + bx) % kSamples;
+            const int row = by * kSubtile + static_cast<int>(rng() % heights[by]);
+            const int col = bx * kSubtile + static_cast<int>(rng() % widths[bx]);
+            tile.z[tile.at(s, row, col)] = 2 + by * kSubtiles + bx;
+        }
+    tile.refresh_subtiles(kSamples, 20, 12);
+    EXPECT_FALSE(tile.subtiles_due);
+    for (int by = 0; by < 2; ++by)
+        for (int bx = 0; bx < 3; ++bx)
+            EXPECT_EQ(tile.subtile_far[by * kSubtiles + bx], 2 + by * kSubtiles + bx) << bx << ", " << by;
+    EXPECT_EQ(tile.far, 2 + kSubtiles + 2);
+    tile.z[tile.at(3, 9, 17)] = kInf;  // subtile (2, 1)
+    tile.refresh_subtiles(kSamples, 20, 12);
+    EXPECT_EQ(tile.subtile_far[kSubtiles + 2], kInf);
+    EXPECT_EQ(tile.subtile_far[kSubtiles + 1], 2 + kSubtiles + 1);
+    EXPECT_EQ(tile.far, kInf);
+}
+
+// Which triangles test subtiles: one covering an eighth of its bounding box or more. A right triangle
+// covers half its box; a sliver along the diagonal of a 100 x 100 box, 1/200 of it; (0, 0), (8, 8),
+// (8, 6) exactly an eighth of its 8 x 8 box, in; with (8, 6.01), just less, out.
+TEST(Subtiles, OnlyTrianglesThatFillTheirBoxTestThem) {
+    const auto corners = [](double ax, double ay, double bx, double by, double cx, double cy) {
+        return Corners{Vertex{ax, ay, 0}, Vertex{bx, by, 0}, Vertex{cx, cy, 0}};
+    };
+    EXPECT_TRUE(fills_box(corners(0, 0, 10, 0, 0, 10)));
+    EXPECT_TRUE(fills_box(corners(0, 0, 0, 10, 10, 0)));  // either winding
+    EXPECT_FALSE(fills_box(corners(0, 0, 100, 100, 100, 99)));
+    EXPECT_TRUE(fills_box(corners(0, 0, 8, 8, 8, 6)));
+    EXPECT_FALSE(fills_box(corners(0, 0, 8, 8, 8, 6.01)));
+}
+
+}  // namespace
+}  // namespace rast::fast::detail
