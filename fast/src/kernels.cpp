@@ -507,6 +507,7 @@ std::uint64_t OpenSubtiles(const SubtileTest& t, const double* far) {
     const auto i0 = hn::Set(d, double(t.i0)), i1 = hn::Set(d, double(t.i1));
     const int by0 = (t.j0 - t.tj) / kSubtile, by1 = (t.j1 - t.tj) / kSubtile;
     const std::uint64_t columns = first_bits((t.i1 - t.ti) / kSubtile + 1) & ~first_bits((t.i0 - t.ti) / kSubtile);
+    const std::uint64_t lane_bits = first_bits(lanes);
     std::uint64_t open = 0;
     for (int k = 0; k < kSubtiles; k += lanes) {
         // The nearest corner's x in each subtile column, within the box (exact: integers and sixteenths).
@@ -521,8 +522,7 @@ std::uint64_t OpenSubtiles(const SubtileTest& t, const double* far) {
                                     : double(std::min(t.j1, row + kSubtile - 1)) + t.oy_max;
             const auto nearest = hn::Add(z0, hn::Add(a_dx, hn::Set(d, t.b * (py - t.y0))));
             const auto behind = hn::Gt(hn::Sub(nearest, hn::LoadU(d, far + by * kSubtiles + k)), margin);
-            const std::uint64_t lanes_bits = first_bits(lanes);
-            open |= (~mask_bits(d, behind) & lanes_bits) << (by * kSubtiles + k);
+            open |= (~mask_bits(d, behind) & lane_bits) << (by * kSubtiles + k);
         }
     }
     std::uint64_t box = 0;

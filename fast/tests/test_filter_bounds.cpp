@@ -18,6 +18,8 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <limits>
 #include <optional>
 #include <random>
 #include <vector>
@@ -216,6 +218,23 @@ TEST(PlaneBound, HierarchicalZDecidesExactlyBeyondTheMargin) {
         // A flat plane: its nearest depth over any box is z0.
         const Plane p{0, 0, tile.far + f * (1e-13 + tile.stored_err), 0, 0, 1e-13};
         EXPECT_EQ(behind_tile(p, c, tile, 0, 3, 0, 3), f > 1) << "f = " << f;
+    }
+}
+
+// Per subtile as for the whole tile: the margin is the plane's bound and the tile's together
+// (in_front_subtiles). A flat plane f (err + stored_err) beyond every subtile's far depth hides them all
+// only for f > 1; a subtile with an empty sample (+infinity) stays open whatever f.
+TEST(PlaneBound, SubtilesDecideExactlyBeyondTheMargin) {
+    const Context& c = plane_context();
+    TileBuffer tile = tile_with_far_depth(c);
+    std::fill(std::begin(tile.subtile_far), std::end(tile.subtile_far), tile.far);
+    constexpr std::uint64_t kAll = ~std::uint64_t{0}, kEmpty = std::uint64_t{1} << 9;  // subtile (1, 1)
+    for (const double f : {-1.0, 0.5, 0.9, 0.99, 1.01, 1.1, 2.0}) {
+        const Plane p{0, 0, tile.far + f * (1e-13 + tile.stored_err), 0, 0, 1e-13};
+        tile.subtile_far[9] = tile.far;
+        EXPECT_EQ(in_front_subtiles(p, c, tile, 0, 0, 0, 63, 0, 63), f > 1 ? 0 : kAll) << "f = " << f;
+        tile.subtile_far[9] = std::numeric_limits<double>::infinity();
+        EXPECT_EQ(in_front_subtiles(p, c, tile, 0, 0, 0, 63, 0, 63), f > 1 ? kEmpty : kAll) << "f = " << f;
     }
 }
 

@@ -27,8 +27,9 @@ std::uint64_t open_by_corners(const SubtileTest& t, const double* far) {
     std::uint64_t open = 0;
     for (int by = 0; by < kSubtiles; ++by)
         for (int bx = 0; bx < kSubtiles; ++bx) {
-            const int x0 = std::max(t.i0, t.ti + bx * kSubtile), x1 = std::min(t.i1, t.ti + bx * kSubtile + kSubtile - 1);
-            const int y0 = std::max(t.j0, t.tj + by * kSubtile), y1 = std::min(t.j1, t.tj + by * kSubtile + kSubtile - 1);
+            const int x = t.ti + bx * kSubtile, y = t.tj + by * kSubtile;
+            const int x0 = std::max(t.i0, x), x1 = std::min(t.i1, x + kSubtile - 1);
+            const int y0 = std::max(t.j0, y), y1 = std::min(t.j1, y + kSubtile - 1);
             if (x0 > x1 || y0 > y1) continue;
             double nearest = kInf;
             for (const double px : {x0 + t.ox_min, x1 + t.ox_max})
@@ -118,25 +119,25 @@ TEST(Subtiles, OpenSubtilesTakesEachSubtilesNearestCorner) {
     hwy::SetSupportedTargetsForTest(0);
 }
 
-// The rows a big triangle's subtiles leave, by hand, in the tile at (64, 0) over the box of pixels
-// [70, 100] x [3, 20] (bands 0 to 2, subtile columns 0 to 4): band 0 open in columns 1 and 3 keeps pixels
-// 72 to 95 (bits 2 to 25 from 70); band 1 closed keeps nothing; band 2 open in columns 0 and 4 keeps the
-// whole row (70 to 100) of rows 16 to 20.
+// The rows a big triangle's subtiles leave, by hand, in the tile at (64, 128) over the box of pixels
+// [70, 100] x [131, 148] (bands 0 to 2, subtile columns 0 to 4): band 0 open in columns 1 and 3 keeps
+// pixels 72 to 95 (bits 2 to 25 from 70); band 1 closed keeps nothing; band 2 open in columns 0 and 4
+// keeps the whole row (70 to 100) of rows 144 to 148.
 TEST(Subtiles, TrimmedRowsKeepEachBandsOpenSpan) {
-    const TileRect rect{64, 127, 0, 63};
+    const TileRect rect{64, 127, 128, 191};
     TrimmedRows rows;
     const std::uint64_t open = 0b01010u | std::uint64_t{0b10001} << (2 * kSubtiles);
-    rows.trim(open, rect, 70, 100, 3, 20);
+    rows.trim(open, rect, 70, 100, 131, 148);
     EXPECT_TRUE(rows.trimmed);
     for (int r = 0; r <= 17; ++r) {
-        const int y = 3 + r;
-        const std::uint64_t expected = y < 8 ? first_bits(24) << 2 : y < 16 ? 0 : first_bits(31);
+        const int y = 131 + r;
+        const std::uint64_t expected = y < 136 ? first_bits(24) << 2 : y < 144 ? 0 : first_bits(31);
         EXPECT_EQ(rows.keep[r], expected) << "row " << y;
     }
     // Every subtile of the box open: nothing trimmed.
-    rows.trim(~std::uint64_t{0}, rect, 70, 100, 3, 20);
+    rows.trim(~std::uint64_t{0}, rect, 70, 100, 131, 148);
     EXPECT_FALSE(rows.trimmed);
-    for (int r = 0; r <= 17; ++r) EXPECT_EQ(rows.keep[r], first_bits(31)) << "row " << 3 + r;
+    for (int r = 0; r <= 17; ++r) EXPECT_EQ(rows.keep[r], first_bits(31)) << "row " << 131 + r;
 }
 
 // The far depths of a tile 20 x 12 pixels (the viewport's corner: subtiles 8 x 8, 8 x 8, 4 x 8 over
