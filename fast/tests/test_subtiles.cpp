@@ -40,8 +40,8 @@ std::uint64_t open_by_corners(const SubtileTest& t, const double* far) {
     return open;
 }
 
-// Random boxes in a tile at (64, 128), planes of either slope sign (and level ones), far depths spread
-// around each subtile's nearest depth by a few margins (some +infinity): every target agrees with the
+// Random boxes in a tile at (64, 128), planes of either slope sign (and level ones), far depths within a
+// few margins of the plane's depth at the tile's centre (some +infinity): every target agrees with the
 // definition bit for bit, and both outcomes come up often.
 TEST(Subtiles, OpenSubtilesIsTheCornerTestOnEveryTarget) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
