@@ -48,9 +48,7 @@ struct Chunk {
 // the screen counts too: a heuristic). Taking boxes of two tiles each way instead let long thin
 // triangles in, which cover little.
 inline bool is_occluder(const Placed& p) {
-    const Corners& v = p.v;  // counter-clockwise
-    const double twice_area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-    return twice_area >= 2.0 * kTile * kTile;
+    return twice_area(p.v) >= 2.0 * kTile * kTile;  // placed corners are counter-clockwise
 }
 
 inline constexpr std::uintptr_t kCacheLine = 64;

@@ -375,13 +375,18 @@ inline double float_margin(const Corners& v, const Context& c) {
            (1 + 0x1p-40);
 }
 
+// Twice the signed area of the triangle with corners v (positive counter-clockwise), in doubles: for
+// heuristics, whose rounding does not matter.
+inline double twice_area(const Corners& v) {
+    return (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+}
+
 // Whether the triangle with corners v covers at least an eighth of its bounding box (a fat one covers
-// half at most), in doubles: a heuristic, whose rounding does not matter.
+// half at most).
 inline bool fills_box(const Corners& v) {
     const auto [x_lo, x_hi] = std::minmax({v[0].x, v[1].x, v[2].x});
     const auto [y_lo, y_hi] = std::minmax({v[0].y, v[1].y, v[2].y});
-    const double twice_area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-    return 4 * std::abs(twice_area) >= (x_hi - x_lo) * (y_hi - y_lo);
+    return 4 * std::abs(twice_area(v)) >= (x_hi - x_lo) * (y_hi - y_lo);
 }
 
 // classify_tiles: also compute what whole-tile trivial accept / reject needs (worth it for a triangle
