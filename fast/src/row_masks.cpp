@@ -16,6 +16,16 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 using DI = hn::ScalableTag<std::int64_t>;
 
+// floor(Q / d) and its remainder Q - floor(Q / d) d, in [0, d), for a Q that is a whole number of rows'
+// steps: a step of n rows from a step of one, without dividing.
+struct Stride {
+    std::int64_t quotient, remainder;
+    Stride twice(std::int64_t d) const {
+        const std::int64_t r = 2 * remainder, carry = r >= d;
+        return {2 * quotient + carry, r - carry * d};
+    }
+};
+
 // RowSpans (spans.h) on as many rows at once as there are 64-bit lanes: lane l walks rows l, l + N, l + 2N,
 // ..., its floor(E / d) and remainder stepped by N rows at a time with the same exact integer operations
 // as RowQuotient::next_row. Lanes past the block's rows compute rows below it (in range: a few steps
@@ -25,32 +35,35 @@ void RowMasks(const RowEdges& edges, int width, int rows, std::uint64_t* masks) 
     const DI di;
     const hn::RebindToUnsigned<DI> du;
     const int lanes = static_cast<int>(hn::Lanes(di));
+    const V zero = hn::Zero(di), one = hn::Set(di, 1), lane = hn::Iota(di, 0);
     V quotient[3], remainder[3], step_quotient[3], step_remainder[3], divisor[3];
     int sign[3];
     for (int k = 0; k < 3; ++k) {
         const std::int64_t p = edges.p[k], d = column_divisor(p);
         sign[k] = sign_of(p);
-        // Rows 0 to N - 1 for the lanes, then row N for the step of N rows.
-        HWY_ALIGN std::int64_t q[HWY_MAX_BYTES / sizeof(std::int64_t)], r[HWY_MAX_BYTES / sizeof(std::int64_t)];
-        RowQuotient<std::int64_t> walk(edges.q[k], edges.step[k], d);
-        for (int l = 0; l < lanes; ++l, walk.next_row()) {
-            q[l] = walk.value();
-            r[l] = walk.remainder();
+        // Lane l starts at row l: row 0 plus the strides of 1, 2, 4, ... rows its index is made of (scalar
+        // values stored for a vector load stalled on the store forwarding, a third of the time here).
+        const std::int64_t q0 = floor_div(edges.q[k], d), s0 = floor_div(edges.step[k], d);
+        Stride stride{s0, edges.step[k] - s0 * d};
+        V q = hn::Set(di, q0), r = hn::Set(di, edges.q[k] - q0 * d);
+        const V dv = hn::Set(di, d);
+        for (int span = 1; span < lanes; span *= 2, stride = stride.twice(d)) {
+            const auto taken = hn::TestBit(lane, hn::Set(di, span));
+            q = hn::IfThenElse(taken, hn::Add(q, hn::Set(di, stride.quotient)), q);
+            r = hn::IfThenElse(taken, hn::Add(r, hn::Set(di, stride.remainder)), r);
+            const auto carry = hn::Not(hn::Lt(r, dv));
+            r = hn::IfThenElse(carry, hn::Sub(r, dv), r);
+            q = hn::IfThenElse(carry, hn::Add(q, one), q);
         }
-        std::int64_t step_q = walk.value() - q[0], step_r = walk.remainder() - r[0];
-        if (step_r < 0) {
-            step_r += d;
-            step_q -= 1;
-        }
-        quotient[k] = hn::Load(di, q);
-        remainder[k] = hn::Load(di, r);
-        step_quotient[k] = hn::Set(di, step_q);
-        step_remainder[k] = hn::Set(di, step_r);
-        divisor[k] = hn::Set(di, d);
+        quotient[k] = q;
+        remainder[k] = r;
+        step_quotient[k] = hn::Set(di, stride.quotient);  // the stride of N rows
+        step_remainder[k] = hn::Set(di, stride.remainder);
+        divisor[k] = dv;
     }
     // Columns are clamped to [-1, width] (RowSpans' clamp_to: one past either end means none).
     const V before = hn::Set(di, -1), after = hn::Set(di, width), last = hn::Set(di, width - 1);
-    const V zero = hn::Zero(di), one = hn::Set(di, 1), top = hn::Set(di, 63);
+    const V top = hn::Set(di, 63);
     const auto all = hn::Set(du, ~std::uint64_t{0});
     for (int row = 0; row < rows; row += lanes) {
         V lo = zero, hi = last;
