@@ -27,7 +27,7 @@ constexpr char kDraw = 'D', kRead = 'I';
 constexpr char kReady = 'R', kTimed = 'T', kIds = 'I', kError = 'E';
 
 template <typename T>
-void append_raw(std::string& bytes, const std::vector<T>& values) {
+void append_raw(std::string& bytes, const Samples<T>& values) {
     bytes.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 

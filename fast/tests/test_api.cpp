@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -284,6 +285,23 @@ TEST(Api, AMovedFromRendererStillRenders) {
     expect_corner_only(target, {4, 2});
 }
 
+// The fast path streams whole cache lines of the framebuffer's rows (copy_out): its storage starts on a
+// line however it was made, constructed, fitted by a render or copied.
+TEST(Api, FramebufferStorageStartsOnACacheLine) {
+    const auto on_a_line = [](const Framebuffer& fb) {
+        return reinterpret_cast<std::uintptr_t>(fb.ids.data()) % 64 == 0 &&
+               reinterpret_cast<std::uintptr_t>(fb.depth.data()) % 64 == 0;
+    };
+    for (int width = 1; width <= 9; ++width) {
+        EXPECT_TRUE(on_a_line(Framebuffer(Viewport{width, 3}, 1))) << width;
+        Framebuffer fitted;
+        render(Scene{{width, 5}, 4, {}}, fitted);
+        EXPECT_TRUE(on_a_line(fitted)) << width;
+        const Framebuffer copy = fitted;
+        EXPECT_TRUE(on_a_line(copy)) << width;
+    }
+}
+
 TEST(Api, InvalidInputLeavesTheTargetUntouched) {
     Scene scene = corner_scene({4, 2});
     scene.triangles[0].v[1].x = std::numeric_limits<double>::quiet_NaN();
@@ -291,7 +309,7 @@ TEST(Api, InvalidInputLeavesTheTargetUntouched) {
     std::fill(target.ids.begin(), target.ids.end(), 3);
     EXPECT_THROW(render(scene, target), std::invalid_argument);
     EXPECT_EQ(target.viewport.width, 5);
-    EXPECT_EQ(target.ids, std::vector<std::int32_t>(25, 3));
+    EXPECT_EQ(target.ids, Samples<std::int32_t>(25, 3));
 }
 
 }  // namespace

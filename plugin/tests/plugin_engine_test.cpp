@@ -85,7 +85,7 @@ TEST(PluginEngine, ARenderErrorCarriesThePluginsMessage) {
 
 TEST(PluginEngine, ACrashOrAnExitIsReportedAndRepeated) {
     const Engine crashing = plugin_engine(misbehaving("crash"));
-    EXPECT_EQ(crashing.render(Scene{{2, 2}, 1, {}}).ids, std::vector<std::int32_t>(4, -1));  // alive until a triangle
+    EXPECT_EQ(crashing.render(Scene{{2, 2}, 1, {}}).ids, Samples<std::int32_t>(4, -1));  // alive until a triangle
     const std::string expected = "plugin " + misbehaving("crash") +
                                  ": crashed (signal 11, Segmentation fault) rendering a scene of 1 triangles, "
                                  "4x3, 1 sample(s)";

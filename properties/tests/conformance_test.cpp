@@ -22,9 +22,9 @@ Triangle tri(double x0, double y0, double x1, double y1, double x2, double y2, d
 // right edge: the tie rule gives both centres to triangle 0.
 Scene split_square() { return {{2, 2}, 1, {tri(0, 0, 2, 0, 2, 2), tri(0, 0, 2, 2, 0, 2)}}; }
 
-Framebuffer with_ids(const Scene& scene, std::vector<std::int32_t> ids) {
+Framebuffer with_ids(const Scene& scene, const std::vector<std::int32_t>& ids) {
     Framebuffer fb(scene.viewport, scene.samples);
-    fb.ids = std::move(ids);
+    fb.ids.assign(ids.begin(), ids.end());
     return fb;
 }
 

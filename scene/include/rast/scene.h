@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <new>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -134,6 +135,28 @@ inline std::vector<Primitive> primitives_by_id(const Scene& scene, const std::ve
     return named;
 }
 
+// Allocates on cache-line (64-byte) boundaries: the fast path writes the framebuffer's rows in whole lines,
+// streamed past the cache, and a row that began mid-line had its ends stored the ordinary way, each
+// such line first read from memory (at 1024 x 1024, a tenth of a render of 20 000 small triangles).
+template <class T>
+struct CacheLineAllocator {
+    using value_type = T;
+    static constexpr std::align_val_t kLine{64};
+    CacheLineAllocator() = default;
+    template <class U>
+    CacheLineAllocator(const CacheLineAllocator<U>&) noexcept {}
+    T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T), kLine)); }
+    void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, kLine); }
+    template <class U>
+    friend bool operator==(const CacheLineAllocator&, const CacheLineAllocator<U>&) noexcept {
+        return true;
+    }
+};
+
+// A framebuffer's per-sample storage.
+template <class T>
+using Samples = std::vector<T, CacheLineAllocator<T>>;
+
 // The z-buffer's content after rendering: per sample, the id of the owning triangle or line (-1 for none) and
 // its depth (+infinity for none). Rows are stored bottom row first (j = 0), matching y up; writers of
 // images and id files flip to top row first.
@@ -142,8 +165,8 @@ struct Framebuffer {
 
     Viewport viewport;
     int samples = 1;
-    std::vector<std::int32_t> ids;
-    std::vector<double> depth;
+    Samples<std::int32_t> ids;
+    Samples<double> depth;
 
     Framebuffer() = default;
     Framebuffer(Viewport vp, int samples_per_pixel)
