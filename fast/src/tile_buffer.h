@@ -162,8 +162,8 @@ struct alignas(64) TileBuffer {
     std::uint64_t fitted_for = 0;  // the render fit() last fitted it for (0: none)
     int cols = 0, rows = 0;  // the row stride and rows per sample plane
     std::size_t size = 0;
-    std::vector<double> z, err;  // err: each depth's bound, kept only while per_sample (admit() allocates it)
-    std::vector<std::int32_t> ids;
+    Samples<double> z, err;  // err: each depth's bound, kept only while per_sample (admit() allocates it)
+    Samples<std::int32_t> ids;
     double stored_err = 0;  // an error bound of every depth stored since clear()
     bool per_sample = false;
     ExactPlanes planes;  // this thread's exact planes, kept from tile to tile for the whole render
