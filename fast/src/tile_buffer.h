@@ -196,7 +196,8 @@ inline constexpr std::size_t kFarRefresh = 4;
 // one): the plane's slopes change sign at random from triangle to triangle, and the branches on them,
 // mispredicted half the time, took over a tenth of a tiny triangle's time.
 inline bool behind_tile(const Plane& p, const Context& c, const TileBuffer& tile, int i0, int i1, int j0, int j1) {
-    // A tile with an empty sample hides nothing: no test (random small triangles left most tiles so).
+    // A tile that had an empty sample at its far depth's last refresh hides nothing by it: no test (random
+    // small triangles leave most tiles so).
     if (tile.far == std::numeric_limits<double>::infinity()) return false;
     const auto nearer = [](bool low, double lo, double hi) {
         const std::uint64_t pick_lo = std::uint64_t{0} - low;

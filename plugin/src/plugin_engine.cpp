@@ -55,8 +55,7 @@ Engine plugin_engine(const std::string& given, const PluginOptions& options) {
                               std::to_string(scene.samples) + " samples is more than a plugin is sent (2^28 samples)");
         fb.viewport = scene.viewport;
         fb.samples = scene.samples;
-        const std::vector<std::int32_t> ids = process->render(scene);
-        fb.ids.assign(ids.begin(), ids.end());
+        fb.ids = process->render(scene);
         // The ABI returns ids alone.
         fb.depth.assign(fb.ids.size(), std::numeric_limits<double>::quiet_NaN());
         const auto count = static_cast<std::int64_t>(scene.triangles.size());

@@ -152,7 +152,7 @@ std::string PluginProcess::read_text(std::uint32_t length, double deadline, cons
     return text;
 }
 
-std::vector<std::int32_t> PluginProcess::render(const Scene& scene) {
+Samples<std::int32_t> PluginProcess::render(const Scene& scene) {
     if (!broken_.empty()) throw EngineError(broken_);
     const std::string doing = "rendering a scene of " + std::to_string(scene.triangles.size()) + " triangles, " +
                               std::to_string(scene.viewport.width) + "x" + std::to_string(scene.viewport.height) +
@@ -171,9 +171,8 @@ std::vector<std::int32_t> PluginProcess::render(const Scene& scene) {
         throw EngineError("plugin " + library_ + " returned an error " + doing + ": " +
                           (message.empty() ? "(no message)" : message));
     }
-    std::vector<std::int32_t> ids(static_cast<std::size_t>(scene.viewport.width) *
-                                  static_cast<std::size_t>(scene.viewport.height) *
-                                  static_cast<std::size_t>(scene.samples));
+    Samples<std::int32_t> ids(static_cast<std::size_t>(scene.viewport.width) *
+                              static_cast<std::size_t>(scene.viewport.height) * static_cast<std::size_t>(scene.samples));
     read_reply(ids.data(), ids.size() * sizeof(std::int32_t), deadline, doing);
     return ids;
 }

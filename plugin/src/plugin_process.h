@@ -24,7 +24,7 @@ public:
 
     const std::string& contract_text() const { return contract_; }
     // The ids the plugin wrote, width·height·samples of them in the ABI's order, unchecked.
-    std::vector<std::int32_t> render(const Scene& scene);
+    Samples<std::int32_t> render(const Scene& scene);
 
 private:
     [[noreturn]] void fail(const std::string& what);

@@ -135,11 +135,13 @@ inline std::vector<Primitive> primitives_by_id(const Scene& scene, const std::ve
     return named;
 }
 
-// Allocates on cache-line (64-byte) boundaries: the fast path writes the framebuffer's rows in whole lines,
-// streamed past the cache, and a row that began mid-line had its ends stored the ordinary way, each
-// such line first read from memory (at 1024 x 1024, a tenth of a render of 20 000 small triangles).
+// Allocates on cache-line (64-byte) boundaries: at one sample per pixel the fast path writes the
+// framebuffer's rows in whole lines, streamed past the cache, and a row that began mid-line had its ends
+// stored the ordinary way, each such line first read from memory (at 1024 x 1024, a tenth of a render of
+// 20 000 small triangles).
 template <class T>
 struct CacheLineAllocator {
+    static_assert(alignof(T) <= 64, "a line holds whole elements");
     using value_type = T;
     static constexpr std::align_val_t kLine{64};
     CacheLineAllocator() = default;
