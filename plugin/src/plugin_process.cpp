@@ -172,7 +172,8 @@ Samples<std::int32_t> PluginProcess::render(const Scene& scene) {
                           (message.empty() ? "(no message)" : message));
     }
     Samples<std::int32_t> ids(static_cast<std::size_t>(scene.viewport.width) *
-                              static_cast<std::size_t>(scene.viewport.height) * static_cast<std::size_t>(scene.samples));
+                              static_cast<std::size_t>(scene.viewport.height) *
+                              static_cast<std::size_t>(scene.samples));
     read_reply(ids.data(), ids.size() * sizeof(std::int32_t), deadline, doing);
     return ids;
 }
