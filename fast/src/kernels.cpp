@@ -208,24 +208,52 @@ struct DepthLanes {
         double* z = rows.z + row;
         return {z, kPerSample ? rows.err + row : z, rows.ids + row};  // err: any valid pointer when unused
     }
-    // The lanes `mask` at px (b_dy: b (py - y0) of their row) against the stored samples from column k
-    // of the row: writes the ones decided nearer, answers the ones left undecided.
-    HWY_INLINE MD test(VD px, VD b_dy, MD mask, Row row, int k) const {
+    // The plane at px (b_dy: b (py - y0) of the lanes' row).
+    HWY_INLINE VD depth(VD px, VD b_dy) const { return hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy)); }
+    // The margin of the lanes from column k of the row: err + the stored depths' bounds.
+    HWY_INLINE VD both(Row row, int k) const {
+        if constexpr (kPerSample) return hn::Add(e, hn::LoadU(D(), row.err + k));
+        return margin;
+    }
+    // Writes the lanes `mask` of `depth` decided nearer than the stored samples from column k of the row
+    // (the gap z' - z beyond the margin `both`), answers the gap.
+    HWY_INLINE VD write(VD depth, VD both, MD mask, Row row, int k) const {
         const D d;
-        const auto depth = hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy));
-        const auto stored = hn::LoadU(d, row.z + k);
-        VD both = margin, stored_err = hn::Zero(d);  // the stored bounds, read where rows keeps them
-        if constexpr (kPerSample) {
-            stored_err = hn::LoadU(d, row.err + k);
-            both = hn::Add(e, stored_err);
-        }
-        const auto gap = hn::Sub(stored, depth);
-        const auto write = hn::And(mask, hn::Gt(gap, both));
-        const auto farther = hn::Lt(gap, hn::Neg(both));
-        hn::BlendedStore(depth, write, d, row.z + k);
-        if constexpr (kPerSample) hn::BlendedStore(e, write, d, row.err + k);
-        hn::BlendedStore(id, id_lanes(write), DId(), row.ids + k);
-        return hn::AndNot(hn::Or(write, farther), mask);
+        const auto gap = hn::Sub(hn::LoadU(d, row.z + k), depth);
+        const auto nearer = hn::And(mask, hn::Gt(gap, both));
+        hn::BlendedStore(depth, nearer, d, row.z + k);
+        if constexpr (kPerSample) hn::BlendedStore(e, nearer, d, row.err + k);
+        hn::BlendedStore(id, id_lanes(nearer), DId(), row.ids + k);
+        return gap;
+    }
+    // The lanes `mask` at px against the stored samples from column k of the row: writes the ones decided
+    // nearer, answers the ones left undecided.
+    HWY_INLINE MD test(VD px, VD b_dy, MD mask, Row row, int k) const {
+        const VD with = both(row, k), gap = write(depth(px, b_dy), with, mask, row, k);
+        const auto decided = hn::Or(hn::Gt(gap, with), hn::Lt(gap, hn::Neg(with)));
+        return hn::AndNot(decided, mask);
+    }
+    // test() without finding the undecided lanes, for a plane whose err is finite: `closest` keeps, lane by
+    // lane, the least |gap| - margin (|gap| alone when the margin is the tile's) over the covered samples,
+    // no more than 0 (the margin) where one was left undecided, as undecided_after() finds. Its depths are
+    // finite then (DepthPlane), the gaps finite or +infinity (an empty slot), so none is NaN. Testing
+    // which lanes are undecided took a fifth of the instructions of a small triangle's depth test.
+    HWY_INLINE void write_decided(VD px, VD b_dy, MD mask, Row row, int k, VD& closest) const {
+        const VD with = both(row, k), gap = write(depth(px, b_dy), with, mask, row, k);
+        const VD distance = kPerSample ? hn::Sub(hn::Abs(gap), with) : hn::Abs(gap);
+        closest = hn::IfThenElse(mask, hn::Min(closest, distance), closest);
+    }
+    // Whether write_decided() left any of the samples whose least distance is `closest` undecided.
+    HWY_INLINE bool any_undecided(VD closest) const {
+        return !hn::AllFalse(D(), hn::Le(closest, kPerSample ? hn::Zero(D()) : margin));
+    }
+    // After write_decided(), the lanes `mask` it left undecided: neither decided farther (the gap within
+    // the margin, or NaN) nor written, which the plane's id tells (rows held none of its samples before).
+    HWY_INLINE MD undecided_after(VD px, VD b_dy, MD mask, Row row, int k) const {
+        const auto gap = hn::Sub(hn::LoadU(D(), row.z + k), depth(px, b_dy));
+        const auto written = hn::RebindMask(D(), hn::Eq(hn::PromoteTo(DI(), hn::LoadU(DId(), row.ids + k)),
+                                                        hn::PromoteTo(DI(), id)));
+        return hn::AndNot(hn::Or(written, hn::Gt(hn::Abs(gap), both(row, k))), mask);
     }
     VD z0, a, x0, b, y0, e, margin;  // margin: err + stored_err
     hn::Vec<DId> id;
@@ -320,25 +348,36 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
     const DepthLanes<kPerSample> lanes_test(p);
     const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
     const double px_start = double(b.i0) + b.sx;
-    double py = double(b.j0) + b.sy;
-    std::uint64_t any = 0;
-    for (int r = 0; r < b.rows; ++r, py += 1) {
-        const std::uint64_t bits = covered[r];
-        undecided[r] = 0;
-        if (bits == 0) continue;
-        const int first = std::countr_zero(bits), last = 63 - std::countl_zero(bits);
-        const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
-        const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-        auto px = hn::Add(hn::Set(d, px_start + first), ramp);
-        std::uint64_t open_bits = 0;
-        for (int k = first; k <= last; k += lanes, px = hn::Add(px, advance)) {
-            const auto mask = hn::FirstN(d, static_cast<std::size_t>(last - k + 1));
-            const auto open = lanes_test.test(px, b_dy, mask, row, k);
-            if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
+    // visit(r, k, mask, px, row, b_dy) for the vectors from column k of each row r's run.
+    const auto each_vector = [&](auto visit) {
+        double py = double(b.j0) + b.sy;
+        for (int r = 0; r < b.rows; ++r, py += 1) {
+            const std::uint64_t bits = covered[r];
+            if (bits == 0) continue;
+            const int first = std::countr_zero(bits), last = 63 - std::countl_zero(bits);
+            const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
+            const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
+            auto px = hn::Add(hn::Set(d, px_start + first), ramp);
+            for (int k = first; k <= last; k += lanes, px = hn::Add(px, advance))
+                visit(r, k, hn::FirstN(d, static_cast<std::size_t>(last - k + 1)), px, row, b_dy);
         }
-        undecided[r] = open_bits;
-        any |= open_bits;
+    };
+    std::fill_n(undecided, b.rows, std::uint64_t{0});
+    // The samples are written where decided nearer, and only a block that left some undecided (rarely
+    // one) is visited again to find them; a plane whose bound is infinite decides none.
+    if (p.err < std::numeric_limits<double>::infinity()) {
+        auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
+        each_vector([&](int, int k, MD mask, VD px, auto row, VD b_dy) {
+            lanes_test.write_decided(px, b_dy, mask, row, k, closest);
+        });
+        if (!lanes_test.any_undecided(closest)) return false;
     }
+    std::uint64_t any = 0;
+    each_vector([&](int r, int k, MD mask, VD px, auto row, VD b_dy) {
+        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(px, b_dy, mask, row, k));
+        undecided[r] |= bits << k;
+        any |= bits;
+    });
     return any != 0;
 }
 
@@ -346,8 +385,8 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
 // SmallEdgeLanes: every row takes all kVectors from the block's first column, its covered samples as the
 // lanes' mask, whatever its run. A small triangle's rows took one vector or two by their runs, which the
 // loop's branch mispredicted (8% of a small-scene render); the lanes outside the run cost less. The
-// coverage is kept as lanes, not bits, and so is what stays undecided until the block is done: turning
-// each vector's mask into bits and back took a third of the loop. px = i + sx is exact, as in DepthOnRuns.
+// coverage is kept as lanes, not bits: turning each vector's mask into bits and back took a third of the
+// loop. px = i + sx is exact, as in DepthOnRuns.
 template <int kVectors, bool kPerSample>
 HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                                std::uint64_t* undecided) {
@@ -369,34 +408,37 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     const DepthLanes<kPerSample> lanes_test(p);
     VD px[kVectors];
     for (int v = 0; v < kVectors; ++v) px[v] = hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0));
-    // Row r's undecided samples of vector v, as mask bits at open[r * kVectors + v].
-    std::uint8_t open[kRowLanes * kVectors][8];
-    auto any = hn::FirstN(d, 0);
-    double py = double(b.j0) + b.sy;
-    for (int r = 0; r < b.rows; ++r, py += 1) {
-        const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
-        const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-        for (int v = 0; v < kVectors; ++v) {
-            const auto lanes32_at = hn::LoadU(d32, inside + r * columns + v * lanes);
-            const auto covered = hn::RebindMask(d, hn::MaskFromVec(hn::PromoteTo(di, lanes32_at)));
-            const auto left = lanes_test.test(px[v], b_dy, covered, row, v * lanes);
-            hn::StoreMaskBits(d, left, open[r * kVectors + v]);
-            any = hn::Or(any, left);
-        }
-    }
-    const bool some = !hn::AllFalse(d, any);
-    for (int r = 0; r < b.rows; ++r) {
-        std::uint64_t bits = 0;
-        if (some) {
+    // visit(r, v, covered, row, b_dy) for each row r and vector v.
+    const auto each_vector = [&](auto visit) {
+        double py = double(b.j0) + b.sy;
+        for (int r = 0; r < b.rows; ++r, py += 1) {
+            const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
+            const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
             for (int v = 0; v < kVectors; ++v) {
-                std::uint64_t chunk = 0;
-                std::memcpy(&chunk, open[r * kVectors + v], (lanes + 7) / 8);
-                bits |= chunk << (v * lanes);
+                const auto lanes32_at = hn::LoadU(d32, inside + r * columns + v * lanes);
+                visit(r, v, hn::RebindMask(d, hn::MaskFromVec(hn::PromoteTo(di, lanes32_at))), row, b_dy);
             }
         }
-        undecided[r] = bits;
+    };
+    // In two passes, as DepthOnRuns.
+    if (p.err < std::numeric_limits<double>::infinity()) {
+        auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
+        each_vector([&](int, int v, auto covered, auto row, VD b_dy) {
+            lanes_test.write_decided(px[v], b_dy, covered, row, v * lanes, closest);
+        });
+        if (!lanes_test.any_undecided(closest)) {
+            std::fill_n(undecided, b.rows, std::uint64_t{0});
+            return false;
+        }
     }
-    return some;
+    std::fill_n(undecided, b.rows, std::uint64_t{0});
+    std::uint64_t any = 0;
+    each_vector([&](int r, int v, auto covered, auto row, VD b_dy) {
+        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(px[v], b_dy, covered, row, v * lanes));
+        undecided[r] |= bits << (v * lanes);
+        any |= bits;
+    });
+    return any != 0;
 }
 
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, const DepthRows& rows,

@@ -48,7 +48,9 @@ struct Coverage {
 // DepthRows carries each stored depth's error bound, every depth stored where it is tested has one of at
 // most stored_err (the tile's largest so far). Rounding is monotone, so a test against stored_err decided
 // nearer or farther is also decided so against the stored depth's own bound, the test the error analysis
-// proves (Plane, setup.h).
+// proves (Plane, setup.h). Where err is finite, so is z at every sample of the block (plane_over_box's
+// bound is infinite where the magnitudes it sums could overflow; setup.h); and the rows hold no sample of
+// triangle `id` before its test (the kernels tell the samples they wrote by it).
 struct DepthPlane {
     double z0, a, x0, b, y0, err, stored_err;
     std::int32_t id;

@@ -192,7 +192,9 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
         int undecided_blocks = 0, written_blocks = 0;
         for (int trial = 0; trial < 2000; ++trial) {
             const Block b = random_block(rng);
-            const DepthPlane p = random_plane(rng, b);
+            DepthPlane p = random_plane(rng, b);
+            // Now and then a plane whose bound is infinite: the kernels decide none of its samples.
+            if (trial % 16 == 5) p.err = std::numeric_limits<double>::infinity();
             const bool per_sample = trial % 2 == 1;
             std::uint64_t masks[kRowLanes];
             const int kind = trial % 5;
@@ -229,51 +231,103 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
 
 // The decision itself, by hand: stored depths z' = z + f (err + err') around the plane's z, for a block
 // every sample of which is covered. A gap beyond the margin on either side is decided (written when the
-// stored depth is the farther), one within it is left to the exact comparison: a margin scaled either way
-// fails, in the scalar test and in every kernel on every target.
+// stored depth is the farther), one within it or at it is left to the exact comparison: a margin scaled
+// either way, or the margin's own gap decided, fails, in the scalar test and in every kernel on every target.
 TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
-    constexpr double kFactors[] = {-3, -1.5, -1.1, -0.9, -0.5, 0, 0.5, 0.9, 1.1, 1.5, 3};
-    constexpr int kCount = static_cast<int>(std::size(kFactors));
-    const Block b{40, 7, kCount, 3, 0.5, 0.5};
-    const DepthPlane p{0.5, 1e-3, 40, -2e-3, 7, 1e-12, 2e-12, 7};
+    // Every depth and stored depth in [0.5, 1), where the margin, 3 2^-41, is a whole number of units in
+    // the last place: a gap of exactly +-margin (f = +-1) is left undecided.
+    const DepthPlane p{0.75, 1e-3, 40, -2e-3, 7, 0x1p-41, 0x1p-40, 7};
     const double margin = p.err + p.stored_err;
+    // Then the gaps at the margin as the block's only undecided samples.
+    const std::vector<double> factor_sets[] = {{-3, -1.5, -1.1, -1, -0.9, -0.5, 0, 0.5, 0.9, 1, 1.1, 1.5, 3},
+                                               {-3, -1, 1, 3}};
+    for (const std::vector<double>& factors : factor_sets) {
+        for (const bool per_sample : {false, true}) {
+            SCOPED_TRACE(::testing::Message() << factors.size() << " gaps, a bound per sample: " << per_sample);
+            const int count = static_cast<int>(factors.size());
+            const Block b{40, 7, count, 3, 0.5, 0.5};
+            Rows start = empty_rows(b, per_sample, 0);
+            for (int r = 0; r < b.rows; ++r)
+                for (int k = 0; k < count; ++k) {
+                    const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
+                    const double px = double(b.i0 + k) + b.sx, py = double(b.j0 + r) + b.sy;
+                    start.z[at] = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0)) + factors[k] * margin;
+                    start.err[at] = per_sample ? p.stored_err : 0;
+                    start.ids[at] = 100 + k;
+                }
+            const auto expect_decisions = [&](Rows& rows, const std::uint64_t* open, const char* what) {
+                SCOPED_TRACE(what);
+                for (int r = 0; r < b.rows; ++r)
+                    for (int k = 0; k < count; ++k) {
+                        const double f = factors[k];
+                        const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
+                        EXPECT_EQ(rows.ids[at], f > 1 ? p.id : 100 + k) << "f = " << f;
+                        EXPECT_EQ((open[r] >> k) & 1, std::abs(f) <= 1 ? 1u : 0u) << "f = " << f;
+                    }
+            };
+            std::uint64_t open[kRowLanes];
+            Rows scalar = start;
+            EXPECT_TRUE(depth_block_scalar(b, Coverage{}, p, scalar.view(), open));
+            expect_decisions(scalar, open, "scalar");
+            for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+                hwy::SetSupportedTargetsForTest(target);
+                SCOPED_TRACE(hwy::TargetName(target));
+                Rows block = start, runs = start, lanes = start;
+                EXPECT_TRUE(depth_block(b, Coverage{}, p, block.view(), poisoned(open)));
+                expect_decisions(block, open, "depth_block");
+                std::uint64_t covered[kRowLanes];
+                for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(count);
+                EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
+                expect_decisions(runs, open, "depth_runs");
+                const SmallEdges inside{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}};
+                EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), poisoned(open)));
+                expect_decisions(lanes, open, "depth_small");
+            }
+            hwy::SetSupportedTargetsForTest(0);
+        }
+    }
+}
+
+// A plane whose bound is infinite decides nothing: every covered sample is left to the exact comparison
+// and none is written, also where its depth overflows (to +infinity beside an empty slot's, a gap that is
+// NaN) and where the slot is empty, in the scalar test and in every kernel on every target.
+TEST(DepthKernels, LeaveEverySampleOfAnInfiniteBoundUndecided) {
+    const Block b{40, 7, 20, 3, 0.5, 0.5};
+    const DepthPlane p{1e308, 1e307, 40, 0, 7, std::numeric_limits<double>::infinity(), 1e-12, 7};
+    std::uint64_t covered[kRowLanes];
+    for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(b.width) & ~first_bits(r);  // rows from column r
+    const Coverage masks{Coverage::Kind::masks, covered};
     for (const bool per_sample : {false, true}) {
+        SCOPED_TRACE(per_sample ? "a bound per sample" : "the tile's bound");
         Rows start = empty_rows(b, per_sample, 0);
         for (int r = 0; r < b.rows; ++r)
-            for (int k = 0; k < kCount; ++k) {
+            for (int k = (r + 1) % 2; k < b.width; k += 2) {  // every other slot empty
                 const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
-                const double px = double(b.i0 + k) + b.sx, py = double(b.j0 + r) + b.sy;
-                start.z[at] = p.z0 + (p.a * (px - p.x0) + p.b * (py - p.y0)) + kFactors[k] * margin;
-                start.err[at] = per_sample ? p.stored_err : 0;
+                start.z[at] = k % 4 == 0 ? 1e308 : -1.0;
+                start.err[at] = per_sample ? 1e-12 : 0;
                 start.ids[at] = 100 + k;
             }
-        const auto expect_decisions = [&](Rows& rows, const std::uint64_t* open, const char* what) {
+        const auto expect_nothing_decided = [&](const Rows& rows, const std::uint64_t* open, const char* what) {
             SCOPED_TRACE(what);
-            for (int r = 0; r < b.rows; ++r)
-                for (int k = 0; k < kCount; ++k) {
-                    const double f = kFactors[k];
-                    const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
-                    EXPECT_EQ(rows.ids[at], f > 1 ? p.id : 100 + k) << "f = " << f;
-                    EXPECT_EQ((open[r] >> k) & 1, std::abs(f) < 1 ? 1u : 0u) << "f = " << f;
-                }
+            EXPECT_EQ(rows.z, start.z);
+            EXPECT_EQ(rows.ids, start.ids);
+            EXPECT_EQ(rows.err, start.err);
+            for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "row " << r;
         };
         std::uint64_t open[kRowLanes];
         Rows scalar = start;
-        EXPECT_TRUE(depth_block_scalar(b, Coverage{}, p, scalar.view(), open));
-        expect_decisions(scalar, open, "scalar");
+        EXPECT_TRUE(depth_block_scalar(b, masks, p, scalar.view(), open));
+        expect_nothing_decided(scalar, open, "scalar");
         for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
             hwy::SetSupportedTargetsForTest(target);
             SCOPED_TRACE(hwy::TargetName(target));
-            Rows block = start, runs = start, lanes = start;
-            EXPECT_TRUE(depth_block(b, Coverage{}, p, block.view(), poisoned(open)));
-            expect_decisions(block, open, "depth_block");
-            std::uint64_t covered[kRowLanes];
-            for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(kCount);
+            Rows runs = start, lanes = start;
             EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
-            expect_decisions(runs, open, "depth_runs");
-            const SmallEdges inside{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}};
-            EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), poisoned(open)));
-            expect_decisions(lanes, open, "depth_small");
+            expect_nothing_decided(runs, open, "depth_runs");
+            // Edge 0 is k - r at column k of row r, the others 1 everywhere: the same samples.
+            const SmallEdges from_column{{0, 1, 1}, {1, 0, 0}, {-1, 0, 0}};
+            EXPECT_TRUE(depth_small(b, from_column, p, lanes.view(), poisoned(open)));
+            expect_nothing_decided(lanes, open, "depth_small");
         }
         hwy::SetSupportedTargetsForTest(0);
     }
