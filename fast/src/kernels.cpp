@@ -362,7 +362,6 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
                 visit(r, k, hn::FirstN(d, static_cast<std::size_t>(last - k + 1)), px, row, b_dy);
         }
     };
-    std::fill_n(undecided, b.rows, std::uint64_t{0});
     // The samples are written where decided nearer, and only a block that left some undecided (rarely
     // one) is visited again to find them; a plane whose bound is infinite decides none.
     if (p.err < std::numeric_limits<double>::infinity()) {
@@ -372,6 +371,7 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
         });
         if (!lanes_test.any_undecided(closest)) return false;
     }
+    std::fill_n(undecided, b.rows, std::uint64_t{0});
     std::uint64_t any = 0;
     each_vector([&](int r, int k, MD mask, VD px, auto row, VD b_dy) {
         const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(px, b_dy, mask, row, k));
@@ -426,10 +426,7 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
         each_vector([&](int, int v, auto covered, auto row, VD b_dy) {
             lanes_test.write_decided(px[v], b_dy, covered, row, v * lanes, closest);
         });
-        if (!lanes_test.any_undecided(closest)) {
-            std::fill_n(undecided, b.rows, std::uint64_t{0});
-            return false;
-        }
+        if (!lanes_test.any_undecided(closest)) return false;
     }
     std::fill_n(undecided, b.rows, std::uint64_t{0});
     std::uint64_t any = 0;
