@@ -29,8 +29,10 @@ public:
     };
 
     // Takes every chunk's occluders, the chunks binned in full (their setups do not move until they are
-    // binned again), and sorts them by their nearest corner's depth, then id: tbb's sort, in the caller's
-    // task arena.
+    // binned again), and sorts them by their depth at the centroid, the mean of their corners' (finite:
+    // render checked them, and thirds do not overflow), then id: tbb's sort, in the caller's task arena.
+    // By their nearest corner's depth, a steep triangle came before others that hide most of it: 10^3
+    // random occluders of radius 64-128 px wrote 26% more samples.
     void gather(std::span<const Chunk> chunks, std::size_t tiles_x, std::size_t tiles) {
         tiles_x_ = tiles_x;
         bins_.resize(tiles);
@@ -39,10 +41,10 @@ public:
             for (const BigEntry& o : chunk.occluders) {
                 const Setup& s = chunk.big[o.setup];
                 const Corners& v = s.p.v;
-                sorted_.push_back({std::min({v[0].z, v[1].z, v[2].z}), o.id, &s, tile_of(s.p.i_lo), tile_of(s.p.i_hi),
+                sorted_.push_back({v[0].z / 3 + v[1].z / 3 + v[2].z / 3, o.id, &s, tile_of(s.p.i_lo), tile_of(s.p.i_hi),
                                    tile_of(s.p.j_lo), tile_of(s.p.j_hi)});
             }
-        tbb::parallel_sort(sorted_.begin(), sorted_.end());  // the depths are finite: render checked them
+        tbb::parallel_sort(sorted_.begin(), sorted_.end());
     }
 
     // Fills the bins of rows [ty0, ty1) of tiles with the sorted occluders that reach them, in order, in
