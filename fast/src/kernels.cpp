@@ -197,7 +197,9 @@ struct DepthLanes {
         : z0(hn::Set(D(), p.z0)), a(hn::Set(D(), p.a)), x0(hn::Set(D(), p.x0)), b(hn::Set(D(), p.b)),
           y0(hn::Set(D(), p.y0)), e(hn::Set(D(), p.err)), margin(hn::Set(D(), p.err + p.stored_err)),
           id(hn::Set(DId(), p.id)) {}
-    // b (py - y0), the scalar definition's, lane by lane: a row's term of the plane.
+    // a (px - x0) and b (py - y0), the scalar definition's, lane by lane: a column's and a row's terms of
+    // the plane. The methods below take the lanes' column terms (a_dx) and their row's (b_dy).
+    HWY_INLINE VD a_dx(VD px) const { return hn::Mul(a, hn::Sub(px, x0)); }
     HWY_INLINE VD b_dy(VD py) const { return hn::Mul(b, hn::Sub(py, y0)); }
     // The row at offset `row` of the rows: z, its bounds (read only when kPerSample) and ids.
     struct Row {
@@ -208,8 +210,7 @@ struct DepthLanes {
         double* z = rows.z + row;
         return {z, kPerSample ? rows.err + row : z, rows.ids + row};  // err: any valid pointer when unused
     }
-    // The plane at px (b_dy: b (py - y0) of the lanes' row).
-    HWY_INLINE VD depth(VD px, VD b_dy) const { return hn::Add(z0, hn::Add(hn::Mul(a, hn::Sub(px, x0)), b_dy)); }
+    HWY_INLINE VD depth(VD a_dx, VD b_dy) const { return hn::Add(z0, hn::Add(a_dx, b_dy)); }
     // The margin of the lanes from column k of the row: err + the stored depths' bounds.
     HWY_INLINE VD both(Row row, int k) const {
         if constexpr (kPerSample) return hn::Add(e, hn::LoadU(D(), row.err + k));
@@ -226,10 +227,10 @@ struct DepthLanes {
         hn::BlendedStore(id, id_lanes(nearer), DId(), row.ids + k);
         return gap;
     }
-    // The lanes `mask` at px against the stored samples from column k of the row: writes the ones decided
-    // nearer, answers the ones left undecided.
-    HWY_INLINE MD test(VD px, VD b_dy, MD mask, Row row, int k) const {
-        const VD with = both(row, k), gap = write(depth(px, b_dy), with, mask, row, k);
+    // The lanes `mask` against the stored samples from column k of the row: writes the ones decided nearer,
+    // answers the ones left undecided.
+    HWY_INLINE MD test(VD a_dx, VD b_dy, MD mask, Row row, int k) const {
+        const VD with = both(row, k), gap = write(depth(a_dx, b_dy), with, mask, row, k);
         const auto decided = hn::Or(hn::Gt(gap, with), hn::Lt(gap, hn::Neg(with)));
         return hn::AndNot(decided, mask);
     }
@@ -238,8 +239,8 @@ struct DepthLanes {
     // no more than 0 (the margin) where one was left undecided, as undecided_after() finds. Its depths are
     // finite then (DepthPlane), the gaps finite or +infinity (an empty slot), so none is NaN. Testing
     // which lanes are undecided took a fifth of the instructions of a small triangle's depth test.
-    HWY_INLINE void write_decided(VD px, VD b_dy, MD mask, Row row, int k, VD& closest) const {
-        const VD with = both(row, k), gap = write(depth(px, b_dy), with, mask, row, k);
+    HWY_INLINE void write_decided(VD a_dx, VD b_dy, MD mask, Row row, int k, VD& closest) const {
+        const VD with = both(row, k), gap = write(depth(a_dx, b_dy), with, mask, row, k);
         const VD distance = kPerSample ? hn::Sub(hn::Abs(gap), with) : hn::Abs(gap);
         closest = hn::IfThenElse(mask, hn::Min(closest, distance), closest);
     }
@@ -249,8 +250,8 @@ struct DepthLanes {
     }
     // After write_decided(), the lanes `mask` it left undecided: neither decided farther (the gap within
     // the margin, or NaN) nor written, which the plane's id tells (rows held none of its samples before).
-    HWY_INLINE MD undecided_after(VD px, VD b_dy, MD mask, Row row, int k) const {
-        const auto gap = hn::Sub(hn::LoadU(D(), row.z + k), depth(px, b_dy));
+    HWY_INLINE MD undecided_after(VD a_dx, VD b_dy, MD mask, Row row, int k) const {
+        const auto gap = hn::Sub(hn::LoadU(D(), row.z + k), depth(a_dx, b_dy));
         const auto written = hn::RebindMask(D(), hn::Eq(hn::PromoteTo(DI(), hn::LoadU(DId(), row.ids + k)),
                                                         hn::PromoteTo(DI(), id)));
         return hn::AndNot(hn::Or(written, hn::Gt(hn::Abs(gap), both(row, k))), mask);
@@ -286,7 +287,7 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
                 continue;
             }
             seen = true;
-            const auto open = lanes_test.test(px, b_dy, mask, row, k);
+            const auto open = lanes_test.test(lanes_test.a_dx(px), b_dy, mask, row, k);
             if (!hn::AllFalse(d, open)) open_bits |= mask_bits(d, open) << k;
         }
         undecided[r] = open_bits;
@@ -346,9 +347,13 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
     const D d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const DepthLanes<kPerSample> lanes_test(p);
-    const auto ramp = hn::Iota(d, 0.0), advance = hn::Set(d, static_cast<double>(lanes));
-    const double px_start = double(b.i0) + b.sx;
-    // visit(r, k, mask, px, row, b_dy) for the vectors from column k of each row r's run.
+    // The plane's column terms a (px - x0), px = i + sx, for every column a vector from a run's sample
+    // reaches: found once for all the rows.
+    HWY_ALIGN double a_dx[kRowLanes + 2 * hn::MaxLanes(D())];
+    const auto ramp = hn::Iota(d, 0.0);
+    for (int k = 0; k < b.width + lanes; k += lanes)
+        hn::Store(lanes_test.a_dx(hn::Add(hn::Set(d, double(b.i0 + k) + b.sx), ramp)), d, a_dx + k);
+    // visit(r, k, mask, a_dx, row, b_dy) for the vectors from column k of each row r's run.
     const auto each_vector = [&](auto visit) {
         double py = double(b.j0) + b.sy;
         for (int r = 0; r < b.rows; ++r, py += 1) {
@@ -357,24 +362,23 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
             const int first = std::countr_zero(bits), last = 63 - std::countl_zero(bits);
             const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-            auto px = hn::Add(hn::Set(d, px_start + first), ramp);
-            for (int k = first; k <= last; k += lanes, px = hn::Add(px, advance))
-                visit(r, k, hn::FirstN(d, static_cast<std::size_t>(last - k + 1)), px, row, b_dy);
+            for (int k = first; k <= last; k += lanes)
+                visit(r, k, hn::FirstN(d, static_cast<std::size_t>(last - k + 1)), hn::LoadU(d, a_dx + k), row, b_dy);
         }
     };
     // The samples are written where decided nearer, and only a block that left some undecided (rarely
     // one) is visited again to find them; a plane whose bound is infinite decides none.
     if (p.err < std::numeric_limits<double>::infinity()) {
         auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
-        each_vector([&](int, int k, MD mask, VD px, auto row, VD b_dy) {
-            lanes_test.write_decided(px, b_dy, mask, row, k, closest);
+        each_vector([&](int, int k, MD mask, VD column, auto row, VD b_dy) {
+            lanes_test.write_decided(column, b_dy, mask, row, k, closest);
         });
         if (!lanes_test.any_undecided(closest)) return false;
     }
     std::fill_n(undecided, b.rows, std::uint64_t{0});
     std::uint64_t any = 0;
-    each_vector([&](int r, int k, MD mask, VD px, auto row, VD b_dy) {
-        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(px, b_dy, mask, row, k));
+    each_vector([&](int r, int k, MD mask, VD column, auto row, VD b_dy) {
+        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(column, b_dy, mask, row, k));
         undecided[r] |= bits << k;
         any |= bits;
     });
@@ -399,8 +403,9 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     const auto width = hn::Set(di32, b.width);
     const auto in_block = [&](auto in, int k) { return hn::And(in, hn::Lt(hn::Iota(di32, k * lanes32), width)); };
     const DepthLanes<kPerSample> lanes_test(p);
-    VD px[kVectors];
-    for (int v = 0; v < kVectors; ++v) px[v] = hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0));
+    VD a_dx[kVectors];  // the plane's column terms (DepthLanes)
+    for (int v = 0; v < kVectors; ++v)
+        a_dx[v] = lanes_test.a_dx(hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0)));
     // visit(r, v, covered, row, b_dy) for each row r and vector v, in order.
 #if HWY_TARGET <= HWY_AVX3
     // AVX-512's masks are bits: a row's coverage goes from the edges' lanes to the depth vectors' masks
@@ -440,14 +445,14 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     if (p.err < std::numeric_limits<double>::infinity()) {
         auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
         each_vector([&](int, int v, auto covered, auto row, VD b_dy) {
-            lanes_test.write_decided(px[v], b_dy, covered, row, v * lanes, closest);
+            lanes_test.write_decided(a_dx[v], b_dy, covered, row, v * lanes, closest);
         });
         if (!lanes_test.any_undecided(closest)) return false;
     }
     std::fill_n(undecided, b.rows, std::uint64_t{0});
     std::uint64_t any = 0;
     each_vector([&](int r, int v, auto covered, auto row, VD b_dy) {
-        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(px[v], b_dy, covered, row, v * lanes));
+        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(a_dx[v], b_dy, covered, row, v * lanes));
         undecided[r] |= bits << (v * lanes);
         any |= bits;
     });
