@@ -353,6 +353,7 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
     const auto ramp = hn::Iota(d, 0.0);
     for (int k = 0; k < b.width + lanes; k += lanes)
         hn::Store(lanes_test.a_dx(hn::Add(hn::Set(d, double(b.i0 + k) + b.sx), ramp)), d, a_dx + k);
+    const MD all = hn::FirstN(d, static_cast<std::size_t>(lanes));
     // visit(r, k, mask, a_dx, row, b_dy) for the vectors from column k of each row r's run.
     const auto each_vector = [&](auto visit) {
         double py = double(b.j0) + b.sy;
@@ -362,7 +363,10 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
             const int first = std::countr_zero(bits), last = 63 - std::countl_zero(bits);
             const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-            for (int k = first; k <= last; k += lanes)
+            // The whole vectors first, the run's last part apart: a mask known to be full costs nothing.
+            int k = first;
+            for (; k + lanes <= last + 1; k += lanes) visit(r, k, all, hn::LoadU(d, a_dx + k), row, b_dy);
+            if (k <= last)
                 visit(r, k, hn::FirstN(d, static_cast<std::size_t>(last - k + 1)), hn::LoadU(d, a_dx + k), row, b_dy);
         }
     };
