@@ -212,16 +212,16 @@ struct DepthLanes {
     }
     HWY_INLINE VD depth(VD a_dx, VD b_dy) const { return hn::Add(z0, hn::Add(a_dx, b_dy)); }
     // The margin of the lanes from column k of the row: err + the stored depths' bounds.
-    HWY_INLINE VD both(Row row, int k) const {
+    HWY_INLINE VD margin_at(Row row, int k) const {
         if constexpr (kPerSample) return hn::Add(e, hn::LoadU(D(), row.err + k));
         return margin;
     }
     // Writes the lanes `mask` of `depth` decided nearer than the stored samples from column k of the row
-    // (the gap z' - z beyond the margin `both`), answers the gap.
-    HWY_INLINE VD write(VD depth, VD both, MD mask, Row row, int k) const {
+    // (the gap z' - z beyond the margin m), answers the gap.
+    HWY_INLINE VD write_nearer(VD depth, VD m, MD mask, Row row, int k) const {
         const D d;
         const auto gap = hn::Sub(hn::LoadU(d, row.z + k), depth);
-        const auto nearer = hn::And(mask, hn::Gt(gap, both));
+        const auto nearer = hn::And(mask, hn::Gt(gap, m));
         hn::BlendedStore(depth, nearer, d, row.z + k);
         if constexpr (kPerSample) hn::BlendedStore(e, nearer, d, row.err + k);
         hn::BlendedStore(id, id_lanes(nearer), DId(), row.ids + k);
@@ -230,21 +230,24 @@ struct DepthLanes {
     // The lanes `mask` against the stored samples from column k of the row: writes the ones decided nearer,
     // answers the ones left undecided.
     HWY_INLINE MD test(VD a_dx, VD b_dy, MD mask, Row row, int k) const {
-        const VD with = both(row, k), gap = write(depth(a_dx, b_dy), with, mask, row, k);
-        const auto decided = hn::Or(hn::Gt(gap, with), hn::Lt(gap, hn::Neg(with)));
+        const VD m = margin_at(row, k), gap = write_nearer(depth(a_dx, b_dy), m, mask, row, k);
+        const auto decided = hn::Or(hn::Gt(gap, m), hn::Lt(gap, hn::Neg(m)));
         return hn::AndNot(decided, mask);
     }
     // test() without finding the undecided lanes, for a plane whose err is finite: `closest` keeps, lane by
-    // lane, the least |gap| - margin (|gap| alone when the margin is the tile's) over the covered samples,
-    // no more than 0 (the margin) where one was left undecided, as undecided_after() finds. Its depths are
-    // finite then (DepthPlane), the gaps finite or +infinity (an empty slot), so none is NaN. Testing
-    // which lanes are undecided took a fifth of the instructions of a small triangle's depth test.
+    // lane, what tells whether a covered sample was left undecided (any_undecided()), for undecided_after()
+    // to find. With the tile's margin, the least |gap|: the plane's depths are finite (DepthPlane) and the
+    // stored ones finite or +infinity, so a gap is never NaN (it may overflow to an infinity). With a bound
+    // per sample, 0 where one was left undecided: |gap| - margin would be NaN where both overflow. Finding
+    // the undecided lanes vector by vector had taken a tenth to a sixth of a small-triangle scene's time.
     HWY_INLINE void write_decided(VD a_dx, VD b_dy, MD mask, Row row, int k, VD& closest) const {
-        const VD with = both(row, k), gap = write(depth(a_dx, b_dy), with, mask, row, k);
-        const VD distance = kPerSample ? hn::Sub(hn::Abs(gap), with) : hn::Abs(gap);
-        closest = hn::IfThenElse(mask, hn::Min(closest, distance), closest);
+        const VD m = margin_at(row, k), gap = write_nearer(depth(a_dx, b_dy), m, mask, row, k);
+        if constexpr (kPerSample)
+            closest = hn::IfThenZeroElse(hn::AndNot(hn::Gt(hn::Abs(gap), m), mask), closest);
+        else
+            closest = hn::IfThenElse(mask, hn::Min(closest, hn::Abs(gap)), closest);
     }
-    // Whether write_decided() left any of the samples whose least distance is `closest` undecided.
+    // Whether write_decided() left any covered sample undecided, `closest` starting at +infinity.
     HWY_INLINE bool any_undecided(VD closest) const {
         return !hn::AllFalse(D(), hn::Le(closest, kPerSample ? hn::Zero(D()) : margin));
     }
@@ -254,7 +257,7 @@ struct DepthLanes {
         const auto gap = hn::Sub(hn::LoadU(D(), row.z + k), depth(a_dx, b_dy));
         const auto written = hn::RebindMask(D(), hn::Eq(hn::PromoteTo(DI(), hn::LoadU(DId(), row.ids + k)),
                                                         hn::PromoteTo(DI(), id)));
-        return hn::AndNot(hn::Or(written, hn::Gt(hn::Abs(gap), both(row, k))), mask);
+        return hn::AndNot(hn::Or(written, hn::Gt(hn::Abs(gap), margin_at(row, k))), mask);
     }
     VD z0, a, x0, b, y0, e, margin;  // margin: err + stored_err
     hn::Vec<DId> id;
@@ -338,8 +341,33 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block b, std::uint6
     });
 }
 
+// The depth test of a block in two passes, each_vector(visit) calling visit(r, k, mask, a_dx, row, b_dy)
+// for its vectors (row r, from column k, the covered lanes `mask` and the plane's column terms there):
+// the samples are written where decided nearer, and only a block that left some undecided (rarely one)
+// is visited again to find them; a plane whose bound is infinite decides none.
+template <bool kPerSample, class EachVector>
+HWY_INLINE bool TwoPasses(const DepthLanes<kPerSample>& lanes_test, const DepthPlane& p, int rows,
+                          EachVector each_vector, std::uint64_t* undecided) {
+    const D d;
+    if (p.err < std::numeric_limits<double>::infinity()) {
+        auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
+        each_vector([&](int, int k, MD mask, VD a_dx, auto row, VD b_dy) {
+            lanes_test.write_decided(a_dx, b_dy, mask, row, k, closest);
+        });
+        if (!lanes_test.any_undecided(closest)) return false;
+    }
+    std::fill_n(undecided, rows, std::uint64_t{0});
+    std::uint64_t any = 0;
+    each_vector([&](int r, int k, MD mask, VD a_dx, auto row, VD b_dy) {
+        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(a_dx, b_dy, mask, row, k));
+        undecided[r] |= bits << k;
+        any |= bits;
+    });
+    return any != 0;
+}
+
 // The depth test on the covered samples of each row (covered[r]), one run per row (its columns
-// [first, last]), in vectors from the run's first sample. py = j + sy and px = i + sx are stepped exactly
+// [first, last]), in vectors from the run's first sample. py = j + sy, stepped, and px = i + sx are exact
 // (sums of integers below 2^25 and multiples of 1/16), so they are the values DepthLoop computes.
 template <bool kPerSample>
 HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const DepthPlane& p, DepthRows rows,
@@ -370,31 +398,15 @@ HWY_INLINE bool DepthOnRuns(const Block b, const std::uint64_t* covered, const D
                 visit(r, k, hn::FirstN(d, static_cast<std::size_t>(last - k + 1)), hn::LoadU(d, a_dx + k), row, b_dy);
         }
     };
-    // The samples are written where decided nearer, and only a block that left some undecided (rarely
-    // one) is visited again to find them; a plane whose bound is infinite decides none.
-    if (p.err < std::numeric_limits<double>::infinity()) {
-        auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
-        each_vector([&](int, int k, MD mask, VD column, auto row, VD b_dy) {
-            lanes_test.write_decided(column, b_dy, mask, row, k, closest);
-        });
-        if (!lanes_test.any_undecided(closest)) return false;
-    }
-    std::fill_n(undecided, b.rows, std::uint64_t{0});
-    std::uint64_t any = 0;
-    each_vector([&](int r, int k, MD mask, VD column, auto row, VD b_dy) {
-        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(column, b_dy, mask, row, k));
-        undecided[r] |= bits << k;
-        any |= bits;
-    });
-    return any != 0;
+    return TwoPasses(lanes_test, p, b.rows, each_vector, undecided);
 }
 
 // DepthOnRuns for a block of at most kVectors vectors across, the covered samples straight from
 // SmallEdgeLanes: every row takes all kVectors from the block's first column, its covered samples as the
 // lanes' mask, whatever its run. A small triangle's rows took one vector or two by their runs, which the
-// loop's branch mispredicted (8% of a small-scene render); the lanes outside the run cost less. The
-// coverage is kept as lanes, not bits: turning each vector's mask into bits and back took a third of the
-// loop. px = i + sx is exact, as in DepthOnRuns.
+// loop's branch mispredicted (8% of a small-scene render); the lanes outside the run cost less. Except on
+// AVX-512, whose masks are bits, the coverage is kept as lanes, not bits: turning each vector's mask into
+// bits and back took a third of the loop. px = i + sx is exact, as in DepthOnRuns.
 template <int kVectors, bool kPerSample>
 HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                                std::uint64_t* undecided) {
@@ -410,7 +422,7 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     VD a_dx[kVectors];  // the plane's column terms (DepthLanes)
     for (int v = 0; v < kVectors; ++v)
         a_dx[v] = lanes_test.a_dx(hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0)));
-    // visit(r, v, covered, row, b_dy) for each row r and vector v, in order.
+    // visit(r, k, covered, a_dx, row, b_dy) for each row r and vector from column k, in order (TwoPasses).
 #if HWY_TARGET <= HWY_AVX3
     // AVX-512's masks are bits: a row's coverage goes from the edges' lanes to the depth vectors' masks
     // by shifts (5% of a small triangle's time on AVX-512; through bits, AVX2 took 8% more instructions).
@@ -420,8 +432,8 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
             const auto b_dy = lanes_test.b_dy(hn::Set(d, double(b.j0 + r) + b.sy));
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
             const std::uint64_t bits = mask_bits(di32, in_block(in, k));
-            for (int h = 0; h < per32 && k * per32 + h < kVectors; ++h)
-                visit(r, k * per32 + h, lanes_of(d, bits >> (h * lanes)), row, b_dy);
+            for (int h = 0, v = k * per32; h < per32 && v < kVectors; ++h, ++v)
+                visit(r, v * lanes, lanes_of(d, bits >> (h * lanes)), a_dx[v], row, b_dy);
         });
     };
 #else
@@ -440,27 +452,13 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
             for (int v = 0; v < kVectors; ++v) {
                 const auto lanes32_at = hn::LoadU(d32, inside + r * columns + v * lanes);
-                visit(r, v, hn::RebindMask(d, hn::MaskFromVec(hn::PromoteTo(di, lanes32_at))), row, b_dy);
+                const auto covered = hn::RebindMask(d, hn::MaskFromVec(hn::PromoteTo(di, lanes32_at)));
+                visit(r, v * lanes, covered, a_dx[v], row, b_dy);
             }
         }
     };
 #endif
-    // In two passes, as DepthOnRuns.
-    if (p.err < std::numeric_limits<double>::infinity()) {
-        auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
-        each_vector([&](int, int v, auto covered, auto row, VD b_dy) {
-            lanes_test.write_decided(a_dx[v], b_dy, covered, row, v * lanes, closest);
-        });
-        if (!lanes_test.any_undecided(closest)) return false;
-    }
-    std::fill_n(undecided, b.rows, std::uint64_t{0});
-    std::uint64_t any = 0;
-    each_vector([&](int r, int v, auto covered, auto row, VD b_dy) {
-        const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(a_dx[v], b_dy, covered, row, v * lanes));
-        undecided[r] |= bits << (v * lanes);
-        any |= bits;
-    });
-    return any != 0;
+    return TwoPasses(lanes_test, p, b.rows, each_vector, undecided);
 }
 
 bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p, const DepthRows& rows,

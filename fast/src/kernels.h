@@ -101,7 +101,8 @@ void coverage_block(const Block& block, const Coverage& coverage, std::uint64_t*
 // exact depth, so either decision, rounding of the gap and margin included, holds for the exact depths:
 // a rounded gap g beyond the rounded margin m has |z' - z| >= g / (1 + u) > m / (1 + u) >=
 // (e + e') kSlack (1 - u) / (1 + u) > e + e'. undecided[r] gets the rest of row r, for the exact
-// comparison; returns whether there are any (undecided is written only then: most blocks have none).
+// comparison; returns whether there are any (callers read undecided only then, and some kernels write it
+// only then: most blocks have none).
 bool depth_block(const Block& block, const Coverage& coverage, const DepthPlane& plane, const DepthRows& rows,
                  std::uint64_t* undecided);
 

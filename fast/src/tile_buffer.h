@@ -155,7 +155,7 @@ struct alignas(64) TileBuffer {
     static_assert(kSubtiles * kSubtile == kTile && kSubtiles * kSubtiles <= 64, "a subtile is a bit of a mask");
     double far = std::numeric_limits<double>::infinity();
     double subtile_far[kSubtiles * kSubtiles];
-    bool subtiles_due = false;  // whether refresh_far ran since refresh_subtiles
+    bool subtiles_due = false;  // whether refresh_far stopped at an empty band: the later bands' are old
     std::size_t since_far = 0;  // samples of the blocks rasterized since far was computed
 
 private:

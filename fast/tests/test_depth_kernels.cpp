@@ -194,8 +194,9 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
         for (int trial = 0; trial < 2000; ++trial) {
             const Block b = random_block(rng);
             DepthPlane p = random_plane(rng, b);
-            // Now and then a plane whose bound is infinite: the kernels decide none of its samples.
-            if (trial % 16 == 5) p.err = std::numeric_limits<double>::infinity();
+            // Now and then a plane whose bound is infinite, in both bound modes and at either edge: the
+            // kernels decide none of its samples.
+            if (trial % 7 == 3) p.err = std::numeric_limits<double>::infinity();
             const bool per_sample = trial % 2 == 1;
             std::uint64_t masks[kRowLanes];
             const int kind = trial % 5;
@@ -291,46 +292,91 @@ TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
 
 // A plane whose bound is infinite decides nothing: every covered sample is left to the exact comparison
 // and none is written, also where its depth overflows (to +infinity beside an empty slot's, a gap that is
-// NaN) and where the slot is empty, in the scalar test and in every kernel on every target.
+// NaN) and where the slot is empty, in the scalar test and in every kernel on every target. Two blocks:
+// stored depths of every kind under a plane that overflows on its right, and every slot empty under one
+// that overflows everywhere (every gap NaN).
 TEST(DepthKernels, LeaveEverySampleOfAnInfiniteBoundUndecided) {
     const Block b{40, 7, 20, 3, 0.5, 0.5};
-    const DepthPlane p{1e308, 1e307, 40, 0, 7, std::numeric_limits<double>::infinity(), 1e-12, 7};
     std::uint64_t covered[kRowLanes];
     for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(b.width) & ~first_bits(r);  // rows from column r
     const Coverage masks{Coverage::Kind::masks, covered};
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    for (const bool overflowing_everywhere : {false, true})
+        for (const bool per_sample : {false, true}) {
+            SCOPED_TRACE(::testing::Message() << "every gap NaN: " << overflowing_everywhere
+                                              << ", a bound per sample: " << per_sample);
+            // 1e308 + 1e307 (px - x0) overflows from px - x0 = 8 on; with x0 = i0 - 9.5, everywhere.
+            const DepthPlane p{1e308, 1e307, overflowing_everywhere ? 30.5 : 40, 0, 7, kInfinity, 1e-12, 7};
+            Rows start = empty_rows(b, per_sample, 0);
+            for (int r = 0; !overflowing_everywhere && r < b.rows; ++r)
+                for (int k = (r + 1) % 2; k < b.width; k += 2) {  // every other slot empty
+                    const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
+                    start.z[at] = k % 4 == 0 ? 1e308 : -1.0;
+                    start.err[at] = per_sample ? 1e-12 : 0;
+                    start.ids[at] = 100 + k;
+                }
+            const auto expect_nothing_decided = [&](const Rows& rows, const std::uint64_t* open, const char* what) {
+                SCOPED_TRACE(what);
+                EXPECT_EQ(rows.z, start.z);
+                EXPECT_EQ(rows.ids, start.ids);
+                EXPECT_EQ(rows.err, start.err);
+                for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "row " << r;
+            };
+            std::uint64_t open[kRowLanes];
+            Rows scalar = start;
+            EXPECT_TRUE(depth_block_scalar(b, masks, p, scalar.view(), open));
+            expect_nothing_decided(scalar, open, "scalar");
+            for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+                hwy::SetSupportedTargetsForTest(target);
+                SCOPED_TRACE(hwy::TargetName(target));
+                Rows runs = start, lanes = start;
+                EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
+                expect_nothing_decided(runs, open, "depth_runs");
+                // Edge 0 is k - r at column k of row r, the others 1 everywhere: the same samples.
+                const SmallEdges from_column{{0, 1, 1}, {1, 0, 0}, {-1, 0, 0}};
+                EXPECT_TRUE(depth_small(b, from_column, p, lanes.view(), poisoned(open)));
+                expect_nothing_decided(lanes, open, "depth_small");
+            }
+            hwy::SetSupportedTargetsForTest(0);
+        }
+}
+
+// A margin that overflows although each bound is finite (err and the stored depths' near the largest
+// double) decides nothing either, also where the gap overflows too (1.7e308 stored, the plane at -1e308):
+// |gap| - margin would be NaN there. Both bound modes, every kernel.
+TEST(DepthKernels, LeaveTheGapsOfAnOverflowingMarginUndecided) {
+    const Block b{40, 7, 8, 2, 0.5, 0.5};
+    const DepthPlane p{-1e308, 0, 40, 0, 7, 1e308, 1e308, 7};  // depth -1e308 everywhere
+    std::uint64_t covered[kRowLanes];
+    for (int r = 0; r < b.rows; ++r) covered[r] = first_bits(b.width);
     for (const bool per_sample : {false, true}) {
-        SCOPED_TRACE(per_sample ? "a bound per sample" : "the tile's bound");
+        SCOPED_TRACE(::testing::Message() << "a bound per sample: " << per_sample);
         Rows start = empty_rows(b, per_sample, 0);
         for (int r = 0; r < b.rows; ++r)
-            for (int k = (r + 1) % 2; k < b.width; k += 2) {  // every other slot empty
+            for (int k = 0; k < b.width; ++k) {
                 const std::size_t at = static_cast<std::size_t>(r * Rows::kStride + k);
-                start.z[at] = k % 4 == 0 ? 1e308 : -1.0;
-                start.err[at] = per_sample ? 1e-12 : 0;
+                start.z[at] = 1.7e308;  // a gap of +infinity
+                start.err[at] = per_sample ? 1e308 : 0;
                 start.ids[at] = 100 + k;
             }
-        const auto expect_nothing_decided = [&](const Rows& rows, const std::uint64_t* open, const char* what) {
-            SCOPED_TRACE(what);
-            EXPECT_EQ(rows.z, start.z);
-            EXPECT_EQ(rows.ids, start.ids);
-            EXPECT_EQ(rows.err, start.err);
-            for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "row " << r;
-        };
         std::uint64_t open[kRowLanes];
-        Rows scalar = start;
-        EXPECT_TRUE(depth_block_scalar(b, masks, p, scalar.view(), open));
-        expect_nothing_decided(scalar, open, "scalar");
         for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
             hwy::SetSupportedTargetsForTest(target);
             SCOPED_TRACE(hwy::TargetName(target));
             Rows runs = start, lanes = start;
             EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
-            expect_nothing_decided(runs, open, "depth_runs");
-            // Edge 0 is k - r at column k of row r, the others 1 everywhere: the same samples.
-            const SmallEdges from_column{{0, 1, 1}, {1, 0, 0}, {-1, 0, 0}};
-            EXPECT_TRUE(depth_small(b, from_column, p, lanes.view(), poisoned(open)));
-            expect_nothing_decided(lanes, open, "depth_small");
+            EXPECT_EQ(runs.ids, start.ids);
+            for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "depth_runs, row " << r;
+            const SmallEdges inside{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}};
+            EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), poisoned(open)));
+            EXPECT_EQ(lanes.ids, start.ids);
+            for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "depth_small, row " << r;
         }
         hwy::SetSupportedTargetsForTest(0);
+        Rows scalar = start;
+        EXPECT_TRUE(depth_block_scalar(b, Coverage{}, p, scalar.view(), open));
+        EXPECT_EQ(scalar.ids, start.ids);
+        for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "scalar, row " << r;
     }
 }
 

@@ -1,7 +1,7 @@
 // Hierarchical z's subtiles (tile_buffer.h, compose.h): which subtiles of a box a plane may be in front
 // in (open_subtiles, on every SIMD target, against the test's definition at all four corners), the rows
-// they leave to test (TrimmedRows), their far depths (TileBuffer::refresh_subtiles), and which triangles
-// test them (fills_box).
+// they leave to test (TrimmedRows), their far depths (TileBuffer::refresh_subtiles and refresh_far), and
+// which triangles test them (fills_box).
 #include "compose.h"
 
 #include <gtest/gtest.h>
@@ -140,13 +140,13 @@ TEST(Subtiles, TrimmedRowsKeepEachBandsOpenSpan) {
     for (int r = 0; r <= 17; ++r) EXPECT_EQ(rows.keep[r], first_bits(31)) << "row " << 131 + r;
 }
 
-// The far depths of a tile 20 x 12 pixels (the viewport's corner: subtiles 8 x 8, 8 x 8, 4 x 8 over
-// 8 x 4), 4 samples: each subtile's largest over all its samples, one planted at each in a different
-// sample plane; an empty sample makes its subtile's +infinity, and the tile's.
-TEST(Subtiles, RefreshTakesEachSubtilesLargestOverItsSamples) {
-    constexpr int kSamples = 4;
-    TileBuffer tile;
-    tile.fit(1, kSamples, {20, 12});
+// A tile 20 x 12 pixels (the viewport's corner: subtiles 8 x 8, 8 x 8, 4 x 8 over 8 x 4), 4 samples,
+// random depths in [-1, 1], and the largest of subtile (bx, by), 2 + kSubtiles by + bx, planted at a random
+// place of it in a different sample plane for each.
+constexpr int kPlantedSamples = 4, kPlantedWidth = 20, kPlantedHeight = 12;
+
+void plant(TileBuffer& tile) {
+    tile.fit(1, kPlantedSamples, {kPlantedWidth, kPlantedHeight});
     tile.clear();
     std::mt19937_64 rng(20261127);
     std::uniform_real_distribution<double> depth(-1, 1);
@@ -154,21 +154,53 @@ TEST(Subtiles, RefreshTakesEachSubtilesLargestOverItsSamples) {
     const int widths[] = {8, 8, 4}, heights[] = {8, 4};
     for (int by = 0; by < 2; ++by)
         for (int bx = 0; bx < 3; ++bx) {
-            const int s = (by * 3 + bx) % kSamples;
+            const int s = (by * 3 + bx) % kPlantedSamples;
             const int row = by * kSubtile + static_cast<int>(rng() % heights[by]);
             const int col = bx * kSubtile + static_cast<int>(rng() % widths[bx]);
             tile.z[tile.at(s, row, col)] = 2 + by * kSubtiles + bx;
         }
-    tile.refresh_subtiles(kSamples, 20, 12);
+}
+
+void expect_planted_band(const TileBuffer& tile, int by) {
+    for (int bx = 0; bx < 3; ++bx)
+        EXPECT_EQ(tile.subtile_far[by * kSubtiles + bx], 2 + by * kSubtiles + bx) << bx << ", " << by;
+}
+
+// Each subtile's far depth is its largest over all its samples; an empty sample makes its subtile's
+// +infinity, and the tile's.
+TEST(Subtiles, RefreshTakesEachSubtilesLargestOverItsSamples) {
+    TileBuffer tile;
+    plant(tile);
+    tile.refresh_subtiles(kPlantedSamples, kPlantedWidth, kPlantedHeight);
     EXPECT_FALSE(tile.subtiles_due);
-    for (int by = 0; by < 2; ++by)
-        for (int bx = 0; bx < 3; ++bx)
-            EXPECT_EQ(tile.subtile_far[by * kSubtiles + bx], 2 + by * kSubtiles + bx) << bx << ", " << by;
+    expect_planted_band(tile, 0);
+    expect_planted_band(tile, 1);
     EXPECT_EQ(tile.far, 2 + kSubtiles + 2);
     tile.z[tile.at(3, 9, 17)] = kInf;  // subtile (2, 1)
-    tile.refresh_subtiles(kSamples, 20, 12);
+    tile.refresh_subtiles(kPlantedSamples, kPlantedWidth, kPlantedHeight);
     EXPECT_EQ(tile.subtile_far[kSubtiles + 2], kInf);
     EXPECT_EQ(tile.subtile_far[kSubtiles + 1], 2 + kSubtiles + 1);
+    EXPECT_EQ(tile.far, kInf);
+}
+
+// The tile's own refresh finds the subtiles' far depths on the way, so they are not due after it, unless
+// it stopped at a band with an empty sample: the bands before are found, the tile's far depth is +infinity
+// and the subtiles are due.
+TEST(Subtiles, RefreshFarFindsTheSubtilesOrStopsAtAnEmptyBand) {
+    TileBuffer tile;
+    plant(tile);
+    tile.subtiles_due = true;
+    tile.since_far = 5;
+    tile.refresh_far(kPlantedSamples, kPlantedWidth, kPlantedHeight);
+    EXPECT_FALSE(tile.subtiles_due);
+    EXPECT_EQ(tile.since_far, 0u);
+    expect_planted_band(tile, 0);
+    expect_planted_band(tile, 1);
+    EXPECT_EQ(tile.far, 2 + kSubtiles + 2);
+    tile.z[tile.at(2, 10, 3)] = kInf;  // subtile (0, 1)
+    tile.refresh_far(kPlantedSamples, kPlantedWidth, kPlantedHeight);
+    EXPECT_TRUE(tile.subtiles_due);
+    expect_planted_band(tile, 0);
     EXPECT_EQ(tile.far, kInf);
 }
 
