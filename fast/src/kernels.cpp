@@ -216,6 +216,9 @@ struct DepthLanes {
         if constexpr (kPerSample) return hn::Add(e, hn::LoadU(D(), row.err + k));
         return margin;
     }
+    // The lanes whose gap is beyond the margin m on either side: decided, nearer or farther (not where the
+    // gap is NaN).
+    static HWY_INLINE MD decided(VD gap, VD m) { return hn::Gt(hn::Abs(gap), m); }
     // Writes the lanes `mask` of `depth` decided nearer than the stored samples from column k of the row
     // (the gap z' - z beyond the margin m), answers the gap.
     HWY_INLINE VD write_nearer(VD depth, VD m, MD mask, Row row, int k) const {
@@ -231,8 +234,7 @@ struct DepthLanes {
     // answers the ones left undecided.
     HWY_INLINE MD test(VD a_dx, VD b_dy, MD mask, Row row, int k) const {
         const VD m = margin_at(row, k), gap = write_nearer(depth(a_dx, b_dy), m, mask, row, k);
-        const auto decided = hn::Or(hn::Gt(gap, m), hn::Lt(gap, hn::Neg(m)));
-        return hn::AndNot(decided, mask);
+        return hn::AndNot(decided(gap, m), mask);
     }
     // test() without finding the undecided lanes, for a plane whose err is finite: `closest` keeps, lane by
     // lane, what tells whether a covered sample was left undecided (any_undecided()), for undecided_after()
@@ -243,7 +245,7 @@ struct DepthLanes {
     HWY_INLINE void write_decided(VD a_dx, VD b_dy, MD mask, Row row, int k, VD& closest) const {
         const VD m = margin_at(row, k), gap = write_nearer(depth(a_dx, b_dy), m, mask, row, k);
         if constexpr (kPerSample)
-            closest = hn::IfThenZeroElse(hn::AndNot(hn::Gt(hn::Abs(gap), m), mask), closest);
+            closest = hn::IfThenZeroElse(hn::AndNot(decided(gap, m), mask), closest);
         else
             closest = hn::IfThenElse(mask, hn::Min(closest, hn::Abs(gap)), closest);
     }
@@ -257,7 +259,7 @@ struct DepthLanes {
         const auto gap = hn::Sub(hn::LoadU(D(), row.z + k), depth(a_dx, b_dy));
         const auto written = hn::RebindMask(D(), hn::Eq(hn::PromoteTo(DI(), hn::LoadU(DId(), row.ids + k)),
                                                         hn::PromoteTo(DI(), id)));
-        return hn::AndNot(hn::Or(written, hn::Gt(hn::Abs(gap), margin_at(row, k))), mask);
+        return hn::AndNot(hn::Or(written, decided(gap, margin_at(row, k))), mask);
     }
     VD z0, a, x0, b, y0, e, margin;  // margin: err + stored_err
     hn::Vec<DId> id;
