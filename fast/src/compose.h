@@ -85,14 +85,14 @@ template <Fault F, class CornersOf, class BlockDepth>
         const DepthRows rows = tile.rows_at(at);
         if (!depth(b, s, plane, rows, undecided)) return;
         decltype(auto) v = corners();  // once for the block's rows
-        // A copy for the rare exact order: handed on by reference, the plane itself went through the
-        // stack for every triangle, not only for these.
+        // The exact order, rare, takes a copy: where the depth test is inlined (the stamps'), the plane then
+        // stays in registers rather than going through the stack for every triangle.
         const DepthPlane p = plane;
         for (int r = 0; r < b.rows; ++r)
             if (undecided[r] != 0) resolve<F>(v, p, b, r, undecided[r], tile, at + r * tile.cols, scene);
     };
-    // One sample a pixel, the common case, without the loop: its counter, bound and offsets' loads took
-    // 22 of a tiny triangle's instructions.
+    // One sample a pixel, the common case, without the loop, which took 22 of a tiny triangle's
+    // instructions.
     const int samples = static_cast<int>(c.offsets.size());
     if (samples == 1) return block(0);
     for (int s = 0; s < samples; ++s) block(s);
