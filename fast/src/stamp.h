@@ -1,8 +1,9 @@
 // Stamps: the coverage of a batch of small triangles' blocks, each at most kStampSide samples each way,
 // as one 64-bit mask per triangle and sample index (SIMD with runtime dispatch, as kernels.h). A tiny
 // triangle's edge functions, set up one at a time and stepped sample by sample in scalar code, took
-// half of its composing; here the setup runs across the batch's triangles (a lane each) and the
-// coverage across a stamp's samples (a lane each), and the depth test reads the mask's bits.
+// half of its composing; here the setup runs across the batch's triangles (a lane each), and so does the
+// coverage where their blocks are alike (else across one stamp's samples, a lane each); the depth test
+// reads the mask's bits.
 #pragma once
 
 #include "planes.h"
