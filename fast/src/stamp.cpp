@@ -16,9 +16,9 @@ HWY_BEFORE_NAMESPACE();
 namespace rast::fast::detail::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Lanes of 32 bits, the batch's triangles, in the setup and in the coverage. Every value computed fits
-// (narrow_edges) where it is read; vector integer arithmetic wraps around elsewhere (the positions past a
-// triangle's block), and those are masked off.
+// Lanes of 32 bits: DT's the batch's triangles (the setup, and Masks' coverage), DS's a stamp's samples
+// (Mask's). Every value computed fits (narrow_edges) where it is read; vector integer arithmetic wraps
+// around elsewhere (the positions past a triangle's block), and those are masked off.
 using DT = hn::CappedTag<std::int32_t, kPlaneBatch>;
 using DS = hn::ScalableTag<std::int32_t>;
 
@@ -109,18 +109,19 @@ std::uint64_t Mask(const StampEdges& t, int k) {
     return covered & row_bits * 0x0101010101010101u & rows;
 }
 
-// The masks of the batch's triangles all at once, over `width` columns and `rows` rows (at least those of
-// every block wanted): lane k is triangle k, and a vector is a stamp position (column c of row r,
+// The masks of the batch's triangles all at once (at least those of `which`), over `width` columns and
+// `rows` rows (at least those of every block in `which`): lane k is triangle k, and a vector is a stamp position (column c of row r,
 // E = e + c dx + r dy); a lane gathers its row's columns as the bits of its int32, cleared past its own
 // block, and each row goes into the triangles' masks at its place. One triangle at a time, three edges
 // broadcast and stepped over a row of lanes cost as much again as the two or three rows of a tiny
 // triangle's block.
-void Masks(const StampEdges& t, int width, int rows, std::uint64_t* masks) {
+void Masks(const StampEdges& t, std::uint32_t which, int width, int rows, std::uint64_t* masks) {
     const DT d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     std::fill_n(masks, kPlaneBatch, std::uint64_t{0});
     const auto one = hn::Set(d, 1), outside = hn::Set(d, -1);
     for (int first = 0; first < kPlaneBatch; first += lanes) {
+        if ((which >> first & ((std::uint32_t{1} << lanes) - 1)) == 0) continue;  // no stamp in these lanes
         hn::Vec<DT> e[3], dx[3], dy[3];
         for (int k = 0; k < 3; ++k) {
             e[k] = hn::LoadU(d, t.e[k] + first);
@@ -143,7 +144,7 @@ void Masks(const StampEdges& t, int width, int rows, std::uint64_t* masks) {
             HWY_ALIGN std::int32_t row_bits[kPlaneBatch];
             hn::Store(hn::IfThenElseZero(hn::Lt(row, block_rows), bits), d, row_bits);
             for (int k = 0; k < lanes; ++k)
-                masks[first + k] |= std::uint64_t(static_cast<std::uint32_t>(row_bits[k])) << (kStampSide * r);
+                masks[first + k] |= std::uint64_t{static_cast<std::uint32_t>(row_bits[k])} << (kStampSide * r);
             for (int k = 0; k < 3; ++k) e[k] = hn::Add(e[k], dy[k]);
         }
     }
@@ -161,11 +162,8 @@ Stamped StampMasks(const PlaneBatch& batch, std::uint32_t narrow, const StampGri
         rows_each += edges.rows[k];
         ++count;
     }
-    // The batch at once, unless its blocks' largest extents make a box much larger than they are (each one
-    // at its own size then): about 16 instructions a position and 20 a row at once, against 35 a triangle
-    // and 15 a row one at a time (AVX2).
-    if (16 * rows * width + 20 * rows < 35 * count + 15 * rows_each) {
-        Masks(edges, width, rows, masks);
+    if (stamps_at_once(width, rows, count, rows_each)) {
+        Masks(edges, stamped.triangles, width, rows, masks);
     } else {
         for (std::uint32_t left = stamped.triangles; left != 0; left &= left - 1) {
             const int k = std::countr_zero(left);

@@ -2,14 +2,16 @@
 // fixed_edges_at and fixed_row_coverage (setup.h, coverage.h, scalar.h), on every SIMD target: every
 // narrow triangle's block and edges, which triangles of a run get stamps (narrow, and their block within
 // the tile at most 8 x 8 and 16 pixels), and for those, every sample of every row and their blocks'
-// samples in all, for each fixed mode and sample count. Corners on sample positions and level edges put
-// samples exactly on edges, where only the tie rule decides; triangles straddle the tile's sides, and
-// blocks from 1 x 9 to 9 x 9 pixels sit either side of the stamp's limits.
+// samples in all, for each fixed mode and sample count, the masks found either way (stamps_at_once).
+// Corners on sample positions and level edges put samples exactly on edges, where only the tie rule
+// decides; triangles straddle the tile's sides, and blocks from 1 x 9 to 9 x 9 pixels sit either side of
+// the stamp's limits.
 #include "compose.h"
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -52,6 +54,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
         SCOPED_TRACE(hwy::TargetName(target));
         std::mt19937_64 rng(20261127);
         int stamped = 0, refused = 0, on_edge = 0;
+        int at_once = 0, one_at_a_time = 0;  // runs whose stamps stamp_masks finds either way (stamps_at_once)
         for (const auto& [vp, rect] : places)
             for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
                 for (const int samples : {1, 4, 8, 16}) {
@@ -73,6 +76,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                         StampMasks stamps;
                         if (narrow != 0) stamps.find(batch, narrow, rect, c);  // as render_tile calls it
                         std::size_t block_samples = 0;
+                        int widest = 0, tallest = 0, count = 0, rows_each = 0;
                         for (std::size_t k = 0; k < run.size(); ++k) {
                             const SmallFixed& t = run[k];
                             const int i0 = std::max(rect.i0, t.i_lo), i1 = std::min(rect.i1, t.i_hi);
@@ -84,6 +88,10 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                             if (want) {
                                 ++stamped;
                                 block_samples += static_cast<std::size_t>((i1 - i0 + 1) * (j1 - j0 + 1) * samples);
+                                widest = std::max(widest, i1 - i0 + 1);
+                                tallest = std::max(tallest, j1 - j0 + 1);
+                                ++count;
+                                rows_each += j1 - j0 + 1;
                             } else {
                                 ++refused;
                             }
@@ -123,6 +131,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                             }
                         }
                         ASSERT_EQ(stamps.samples, block_samples) << "trial " << trial;
+                        if (count > 0) ++(stamps_at_once(widest, tallest, count, rows_each) ? at_once : one_at_a_time);
                     }
                 }
         hwy::SetSupportedTargetsForTest(0);
@@ -131,6 +140,9 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
         EXPECT_GT(stamped, 3000) << refused;
         EXPECT_GT(refused, 300) << stamped;
         EXPECT_GT(on_edge, 1000);
+        // Both ways of finding a run's masks are held to the definition.
+        EXPECT_GT(at_once, 500) << one_at_a_time;
+        EXPECT_GT(one_at_a_time, 500) << at_once;
     }
 }
 
