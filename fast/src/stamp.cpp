@@ -110,11 +110,11 @@ std::uint64_t Mask(const StampEdges& t, int k) {
 }
 
 // The masks of the batch's triangles all at once (at least those of `which`), over `width` columns and
-// `rows` rows (at least those of every block in `which`): lane k is triangle k, and a vector is a stamp position (column c of row r,
-// E = e + c dx + r dy); a lane gathers its row's columns as the bits of its int32, cleared past its own
-// block, and each row goes into the triangles' masks at its place. One triangle at a time, three edges
-// broadcast and stepped over a row of lanes cost as much again as the two or three rows of a tiny
-// triangle's block.
+// `rows` rows (at least those of every block in `which`): lane k is triangle k, and a vector is a stamp
+// position (column c of row r, E = e + c dx + r dy); a lane gathers its row's columns as the bits of its
+// int32, cleared past its own block, and each row goes into the triangles' masks at its place. One
+// triangle at a time, three edges broadcast and stepped over a row of lanes cost as much again as the two
+// or three rows of a tiny triangle's block.
 void Masks(const StampEdges& t, std::uint32_t which, int width, int rows, std::uint64_t* masks) {
     const DT d;
     const int lanes = static_cast<int>(hn::Lanes(d));
