@@ -60,6 +60,36 @@ HWY_INLINE hn::Mask<DId> id_lanes(MD m) {
 #endif
 }
 
+// min(closest, |v|) in the lanes of `mask`, closest elsewhere; closest >= 0. AVX-512's range operation
+// takes the absolute value in the same instruction.
+HWY_INLINE VD masked_min_abs(MD mask, VD closest, VD v) {
+#if HWY_TARGET <= HWY_AVX3
+    return VD{_mm512_mask_range_pd(closest.raw, mask.raw, closest.raw, v.raw, 0xA)};  // min |.|, sign cleared
+#else
+    return hn::IfThenElse(mask, hn::Min(closest, hn::Abs(v)), closest);
+#endif
+}
+
+// The edges' lanes, 32 bits each.
+using DI32 = hn::ScalableTag<std::int32_t>;
+
+// The lanes of `mask` where a > b. On AVX-512 one compare under the mask, not a compare and a mask
+// operation: the depth test's loops are bound by mask operations there.
+HWY_INLINE MD masked_gt(MD mask, VD a, VD b) {
+#if HWY_TARGET <= HWY_AVX3
+    return MD{_mm512_mask_cmp_pd_mask(mask.raw, a.raw, b.raw, _CMP_GT_OQ)};
+#else
+    return hn::And(mask, hn::Gt(a, b));
+#endif
+}
+HWY_INLINE hn::Mask<DI32> masked_gt(hn::Mask<DI32> mask, hn::Vec<DI32> a, hn::Vec<DI32> b) {
+#if HWY_TARGET <= HWY_AVX3
+    return hn::Mask<DI32>{_mm512_mask_cmpgt_epi32_mask(mask.raw, a.raw, b.raw)};
+#else
+    return hn::And(mask, hn::Gt(a, b));
+#endif
+}
+
 // Each evaluator is told the row (start_row, rows in order from 0), then asked for the lanes from k = 0
 // upwards in steps of Lanes(D) (chunk), px being the lanes' sample x, i + sx.
 struct All {
@@ -224,7 +254,7 @@ struct DepthLanes {
     HWY_INLINE VD write_nearer(VD depth, VD m, MD mask, Row row, int k) const {
         const D d;
         const auto gap = hn::Sub(hn::LoadU(d, row.z + k), depth);
-        const auto nearer = hn::And(mask, hn::Gt(gap, m));
+        const auto nearer = masked_gt(mask, gap, m);
         hn::BlendedStore(depth, nearer, d, row.z + k);
         if constexpr (kPerSample) hn::BlendedStore(e, nearer, d, row.err + k);
         hn::BlendedStore(id, id_lanes(nearer), DId(), row.ids + k);
@@ -247,7 +277,7 @@ struct DepthLanes {
         if constexpr (kPerSample)
             closest = hn::IfThenZeroElse(hn::AndNot(decided(gap, m), mask), closest);
         else
-            closest = hn::IfThenElse(mask, hn::Min(closest, hn::Abs(gap)), closest);
+            closest = masked_min_abs(mask, closest, gap);
     }
     // Whether write_decided() left any covered sample undecided, `closest` starting at +infinity.
     HWY_INLINE bool any_undecided(VD closest) const {
@@ -304,11 +334,11 @@ bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows,
 // The integer edges of a block that fit in 32 bits, in 32-bit lanes (twice as many per vector as the
 // depth test's), with all three edges in the registers: row_lanes(inside, r, k) is called for the rows r
 // in order and the vectors k = 0 .. count - 1 across each, `inside` the mask of the vector's lanes (columns
-// k * Lanes + l) inside all three. A count the compiler knows unrolls the loop (a small triangle's rows
-// take one or two vectors, and the loop's own instructions were as many as the evaluation's).
+// k * Lanes + l) inside the block and all three edges. A count the compiler knows unrolls the loop (a
+// small triangle's rows take one or two vectors, and the loop's own instructions were as many as the
+// evaluation's).
 template <class Row>
 HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block b, int count, Row row_lanes) {
-    using DI32 = hn::ScalableTag<std::int32_t>;
     const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
     hn::Vec<DI32> row[3], step[3], down[3];
@@ -317,13 +347,15 @@ HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block b, int count
         step[e] = hn::Mul(hn::Set(di, edges.dx[e]), hn::Set(di, static_cast<std::int32_t>(lanes32)));
         down[e] = hn::Set(di, edges.dy[e]);
     }
+    const auto width = hn::Set(di, b.width), outside = hn::Set(di, -1);
     for (int r = 0; r < b.rows; ++r) {
         auto v0 = row[0], v1 = row[1], v2 = row[2];
         for (int k = 0; k < count; ++k) {
             // All three are >= 0 exactly when their bitwise or is > -1. Vector integer arithmetic wraps
             // around: a lane inside the block ends at its true value, which fits (SmallEdges); the lanes
-            // past the block's width, which may not, are the caller's to mask off.
-            row_lanes(hn::Gt(hn::Or(hn::Or(v0, v1), v2), hn::Set(di, -1)), r, k);
+            // past the block's width, which may not, are masked off.
+            const auto in_block = hn::Lt(hn::Iota(di, k * lanes32), width);
+            row_lanes(masked_gt(in_block, hn::Or(hn::Or(v0, v1), v2), outside), r, k);
             v0 = hn::Add(v0, step[0]);
             v1 = hn::Add(v1, step[1]);
             v2 = hn::Add(v2, step[2]);
@@ -334,12 +366,11 @@ HWY_INLINE void SmallEdgeLanes(const SmallEdges& edges, const Block b, int count
 
 // The covered samples of each row of a block as bits (SmallEdgeLanes).
 HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block b, std::uint64_t* covered) {
-    const hn::ScalableTag<std::int32_t> di;
+    const DI32 di;
     const int lanes32 = static_cast<int>(hn::Lanes(di));
-    const std::uint64_t in_block = first_bits(b.width);
     for (int r = 0; r < b.rows; ++r) covered[r] = 0;
     SmallEdgeLanes(edges, b, (b.width + lanes32 - 1) / lanes32, [&](auto inside, int r, int k) {
-        covered[r] |= (mask_bits(di, inside) << (k * lanes32)) & in_block;
+        covered[r] |= mask_bits(di, inside) << (k * lanes32);
     });
 }
 
@@ -413,29 +444,28 @@ template <int kVectors, bool kPerSample>
 HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const DepthPlane& p, DepthRows rows,
                                std::uint64_t* undecided) {
     const D d;
-    const hn::ScalableTag<std::int32_t> di32;
+    const DI32 di32;
     const int lanes = static_cast<int>(hn::Lanes(d)), lanes32 = static_cast<int>(hn::Lanes(di32));
     // The edges take whole vectors of 32-bit lanes, twice a depth vector's (or as many, on one lane): at
     // most kVectors + 1 depth vectors' columns. Past the block's width a column is not covered.
     const int vectors32 = (kVectors * lanes + lanes32 - 1) / lanes32;
-    const auto width = hn::Set(di32, b.width);
-    const auto in_block = [&](auto in, int k) { return hn::And(in, hn::Lt(hn::Iota(di32, k * lanes32), width)); };
     const DepthLanes<kPerSample> lanes_test(p);
     VD a_dx[kVectors];  // the plane's column terms (DepthLanes)
     for (int v = 0; v < kVectors; ++v)
         a_dx[v] = lanes_test.a_dx(hn::Add(hn::Set(d, double(b.i0 + v * lanes) + b.sx), hn::Iota(d, 0.0)));
     // visit(r, k, covered, a_dx, row, b_dy) for each row r and vector from column k, in order (TwoPasses).
 #if HWY_TARGET <= HWY_AVX3
-    // AVX-512's masks are bits: a row's coverage goes from the edges' lanes to the depth vectors' masks
-    // by shifts (5% of a small triangle's time on AVX-512; through bits, AVX2 took 8% more instructions).
+    // AVX-512's masks are bits: a row's coverage goes from the edges' mask to the depth vectors' by a
+    // shift of the mask register, 8 lanes (through a general register it cost 2% of a small triangle's
+    // time; on AVX2 the bits' way took 8% more instructions than the lanes').
     const int per32 = lanes32 / lanes;
     const auto each_vector = [&](auto visit) {
         SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {
             const auto b_dy = lanes_test.b_dy(hn::Set(d, double(b.j0 + r) + b.sy));
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
-            const std::uint64_t bits = mask_bits(di32, in_block(in, k));
             for (int h = 0, v = k * per32; h < per32 && v < kVectors; ++h, ++v)
-                visit(r, v * lanes, lanes_of(d, bits >> (h * lanes)), a_dx[v], row, b_dy);
+                visit(r, v * lanes, MD{static_cast<__mmask8>(h == 0 ? in.raw : _kshiftri_mask16(in.raw, 8))}, a_dx[v],
+                      row, b_dy);
         });
     };
 #else
@@ -445,7 +475,7 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     const int columns = vectors32 * lanes32;
     HWY_ALIGN std::int32_t inside[kRowLanes * (kVectors + 1) * hn::MaxLanes(D())];
     SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {
-        hn::Store(hn::VecFromMask(di32, in_block(in, k)), di32, inside + r * columns + k * lanes32);
+        hn::Store(hn::VecFromMask(di32, in), di32, inside + r * columns + k * lanes32);
     });
     const auto each_vector = [&](auto visit) {
         double py = double(b.j0) + b.sy;
