@@ -32,7 +32,7 @@ HWY_INLINE void Advance(hn::Vec<DI>& quotient, hn::Vec<DI>& remainder, hn::Vec<D
                         hn::Vec<DI> step_remainder, hn::Vec<DI> d) {
     quotient = hn::Add(quotient, step_quotient);
     remainder = hn::Add(remainder, step_remainder);
-    const auto carry = hn::Not(hn::Lt(remainder, d));
+    const auto carry = hn::Gt(remainder, hn::Sub(d, hn::Set(DI(), 1)));  // remainder >= d, no mask negated
     remainder = hn::IfThenElse(carry, hn::Sub(remainder, d), remainder);
     quotient = hn::IfThenElse(carry, hn::Add(quotient, hn::Set(DI(), 1)), quotient);
 }
