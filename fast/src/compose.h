@@ -62,6 +62,15 @@ void resolve(const Corners& v, const DepthPlane& p, const Block& b, int r, std::
     }
 }
 
+// The rows of block b (its first sample at `at`) that the depth test left undecided, undecided[r] for row
+// r, get the exact (z, id) order (or the injected bug).
+template <Fault F>
+void resolve_rows(const Corners& v, const DepthPlane& p, const Block& b, const std::uint64_t* undecided,
+                  TileBuffer& tile, std::size_t at, const SceneView& scene) {
+    for (int r = 0; r < b.rows; ++r)
+        if (undecided[r] != 0) resolve<F>(v, p, b, r, undecided[r], tile, at + r * tile.cols, scene);
+}
+
 // Counts a block of `samples` samples towards the refresh of the tile's far depth, refreshing it when due.
 inline void count_block(TileBuffer& tile, std::size_t samples, const TileRect& rect, const Context& c) {
     tile.since_far += samples;
@@ -84,12 +93,10 @@ template <Fault F, class CornersOf, class BlockDepth>
         const std::size_t at = tile.at(s, j0 - rect.j0, i0 - rect.i0);
         const DepthRows rows = tile.rows_at(at);
         if (!depth(b, s, plane, rows, undecided)) return;
-        decltype(auto) v = corners();  // once for the block's rows
         // The exact order, rare, takes a copy: where the depth test is inlined (the stamps'), the plane then
         // stays in registers rather than going through the stack for every triangle.
         const DepthPlane p = plane;
-        for (int r = 0; r < b.rows; ++r)
-            if (undecided[r] != 0) resolve<F>(v, p, b, r, undecided[r], tile, at + r * tile.cols, scene);
+        resolve_rows<F>(corners(), p, b, undecided, tile, at, scene);
     };
     // One sample a pixel, the common case, without the loop, which took 22 of a tiny triangle's
     // instructions.
@@ -307,22 +314,48 @@ template <bool kPerSample>
     return true;
 }
 
-// The small triangles run[k] (their planes[k]; narrow: bit k for a narrow one) in order: those whose
-// stamps were found (stamps.triangles) test depth on the masks' bits, the others by rasterize_small.
-// The stamps' bookkeeping is done once for the run, before any is composed: their blocks are counted
-// for the far depth, and of their finite bounds the largest and the smallest admitted, which leaves the
-// tile's bound above each and switches it to a bound per sample if one of them is far from it (an
-// infinite one is admitted apart: admitted in their place it would raise the tile's bound not at all).
-// Their planes may then carry a larger tile bound than one at a time would: still a bound.
+// The narrow small triangles of a run without stamps whose edges the stamps' setup found (stamps.edges,
+// lane k for run[k]) and whose block is not the scalar test's (as rasterize_small would pick
+// depth_small), with one sample a pixel: one depth_small_run call composes them (`direct`: bit k for
+// run[k]), their bookkeeping done with the stamps'. With more samples a triangle has a block at each
+// sample index, and goes to rasterize_small.
+struct DirectRun {
+    std::uint32_t triangles = 0;
+    std::size_t samples = 0;
+    template <class Run>
+    DirectRun(const Run& run, std::uint32_t narrow, const StampMasks& stamps, const TileRect& rect,
+              const Context& c) {
+        if (!stamps.set_up || c.offsets.size() != 1) return;
+        for (std::uint32_t m = narrow & ~stamps.triangles; m != 0; m &= m - 1) {
+            const int k = std::countr_zero(m);
+            const TileRect box = box_in(run[k], rect);
+            const auto area = static_cast<std::size_t>(box.i1 - box.i0 + 1) * (box.j1 - box.j0 + 1);
+            if (area <= kScalarSamples) continue;
+            triangles |= std::uint32_t{1} << k;
+            samples += area;
+        }
+    }
+};
+
+// The small triangles run[k] (their planes[k]; narrow: bit k for a narrow one): those whose stamps were
+// found (stamps.triangles) test depth on the masks' bits, the direct ones (DirectRun) go to
+// depth_small_run together, the others to rasterize_small; the (z, id) order is total, so the order they
+// are composed in does not matter. The bookkeeping of the stamps and the direct ones is done once for the
+// run, before any is composed: their blocks are counted for the far depth, and of their finite bounds the
+// largest and the smallest admitted, which leaves the tile's bound above each and switches it to a bound
+// per sample if one of them is far from it (an infinite one is admitted apart: admitted in their place it
+// would raise the tile's bound not at all). Their planes may then carry a larger tile bound than one at a
+// time would: still a bound.
 template <Fault F>
 void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::uint32_t narrow,
                    const StampMasks& stamps, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
     const Context& c = scene.c;
-    if (stamps.triangles != 0) {
+    const DirectRun direct(run, narrow, stamps, rect, c);
+    if (const std::uint32_t together = stamps.triangles | direct.triangles; together != 0) {
         constexpr double kInfinity = std::numeric_limits<double>::infinity();
         double smallest = kInfinity, largest = 0;
         bool unbounded = false;  // a plane whose bound overflowed (narrow_planes makes it +infinity)
-        for (std::uint32_t m = stamps.triangles; m != 0; m &= m - 1) {
+        for (std::uint32_t m = together; m != 0; m &= m - 1) {
             const double e = planes[std::countr_zero(m)].err;
             if (e < kInfinity) {
                 smallest = std::min(smallest, e);
@@ -331,7 +364,7 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
                 unbounded = true;
             }
         }
-        count_block(tile, stamps.samples, rect, c);
+        count_block(tile, stamps.samples + direct.samples, rect, c);
         // An infinite bound raises no other, but switches a tile that holds depths to a bound per sample.
         if (unbounded) tile.admit(kInfinity);
         if (smallest <= largest) {
@@ -342,6 +375,7 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
     for (std::size_t k = 0; k < run.size(); ++k) {
         const SmallFixed& t = run[k];
         const Plane& pl = planes[k];
+        if (direct.triangles >> k & 1) continue;
         if (!(stamps.triangles >> k & 1)) {
             rasterize_small<F>(t, pl, narrow >> k & 1, stamps.set_up ? stamps.edges : nullptr, static_cast<int>(k),
                                rect, tile, scene);
@@ -358,6 +392,30 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
         };
         compose_blocks<F>([&] { return placed_of(t, c).v; }, plane, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
                           depth);
+    }
+    if (direct.triangles == 0) return;
+    SmallRunEntry entries[kPlaneBatch];
+    int which[kPlaneBatch];  // entries[n] is run[which[n]]
+    std::size_t n = 0;
+    for (std::uint32_t m = direct.triangles; m != 0; m &= m - 1) {
+        const int k = std::countr_zero(m);
+        const SmallFixed& t = run[k];
+        const Plane& pl = planes[k];
+        const TileRect box = box_in(t, rect);
+        if (behind_tile(pl, c, tile, box.i0, box.i1, box.j0, box.j1)) continue;
+        entries[n] = {{box.i0, box.j0, box.i1 - box.i0 + 1, box.j1 - box.j0 + 1, c.offsets[0].x, c.offsets[0].y},
+                      small_edges(stamps.edges[0], k),
+                      pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, t.id,
+                      static_cast<std::ptrdiff_t>(tile.at(0, box.j0 - rect.j0, box.i0 - rect.i0))};
+        which[n++] = k;
+    }
+    std::uint64_t undecided[kTile];
+    const DepthRows rows = tile.rows_at(0);
+    for (std::size_t k = 0; (k = c.depth_small_run(entries, k, n, rows, tile.stored_err, undecided)) < n; ++k) {
+        const SmallRunEntry& e = entries[k];
+        const DepthPlane p{e.z0, e.a, e.x0, e.b, e.y0, e.err, tile.stored_err, e.id};
+        resolve_rows<F>(placed_of(run[which[k]], c).v, p, e.block, undecided, tile, static_cast<std::size_t>(e.at),
+                        scene);
     }
 }
 

@@ -503,17 +503,35 @@ bool DepthRuns(const Block& b, const std::uint64_t* covered, const DepthPlane& p
 // The runs first, then the depth test on them: in one loop the edges' nine vectors and the depth test's
 // did not fit the 16 registers of AVX2 together, and the spills cost 5-10% of the time on small triangles.
 // Blocks up to four vectors across are tested by columns (DepthOnColumns), wider ones by runs.
+template <bool kPerSample>
+HWY_INLINE bool DepthSmallOf(const Block& b, const SmallEdges& edges, const DepthPlane& p, const DepthRows& rows,
+                             std::uint64_t* undecided) {
+    const int lanes = static_cast<int>(hn::Lanes(D()));
+    if (b.width <= lanes) return DepthOnColumns<1, kPerSample>(b, edges, p, rows, undecided);
+    if (b.width <= 2 * lanes) return DepthOnColumns<2, kPerSample>(b, edges, p, rows, undecided);
+    if (b.width <= 3 * lanes) return DepthOnColumns<3, kPerSample>(b, edges, p, rows, undecided);
+    if (b.width <= 4 * lanes) return DepthOnColumns<4, kPerSample>(b, edges, p, rows, undecided);
+    std::uint64_t covered[kRowLanes];
+    SmallEdgeRuns(edges, b, covered);
+    return DepthOnRuns<kPerSample>(b, covered, p, rows, undecided);
+}
+
 bool DepthSmall(const Block& b, const SmallEdges& edges, const DepthPlane& p, const DepthRows& rows,
                 std::uint64_t* undecided) {
-    const int lanes = static_cast<int>(hn::Lanes(D()));
-    return with_stored_bounds(rows, [&](auto per_sample) {
-        if (b.width <= lanes) return DepthOnColumns<1, per_sample>(b, edges, p, rows, undecided);
-        if (b.width <= 2 * lanes) return DepthOnColumns<2, per_sample>(b, edges, p, rows, undecided);
-        if (b.width <= 3 * lanes) return DepthOnColumns<3, per_sample>(b, edges, p, rows, undecided);
-        if (b.width <= 4 * lanes) return DepthOnColumns<4, per_sample>(b, edges, p, rows, undecided);
-        std::uint64_t covered[kRowLanes];
-        SmallEdgeRuns(edges, b, covered);
-        return DepthOnRuns<per_sample>(b, covered, p, rows, undecided);
+    return with_stored_bounds(
+        rows, [&](auto per_sample) { return DepthSmallOf<per_sample>(b, edges, p, rows, undecided); });
+}
+
+std::size_t DepthSmallRun(const SmallRunEntry* entries, std::size_t first, std::size_t count,
+                          const DepthRows& tile, double stored_err, std::uint64_t* undecided) {
+    return with_stored_bounds(tile, [&](auto per_sample) {
+        for (std::size_t k = first; k < count; ++k) {
+            const SmallRunEntry& t = entries[k];
+            const DepthRows rows{tile.z + t.at, per_sample ? tile.err + t.at : nullptr, tile.ids + t.at, tile.stride};
+            const DepthPlane p{t.z0, t.a, t.x0, t.b, t.y0, t.err, stored_err, t.id};
+            if (DepthSmallOf<per_sample>(t.block, t.edges, p, rows, undecided)) return k;
+        }
+        return count;
     });
 }
 
@@ -564,6 +582,7 @@ bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, const De
 }
 
 DepthSmallKernel DepthSmallKernelOf() { return &DepthSmall; }
+DepthSmallRunKernel DepthSmallRunKernelOf() { return &DepthSmallRun; }
 
 double Farthest(const double* z, std::size_t n) {
     const D d;
@@ -670,6 +689,7 @@ HWY_EXPORT(DepthBlock);
 HWY_EXPORT(DepthRuns);
 HWY_EXPORT(DepthSmall);
 HWY_EXPORT(DepthSmallKernelOf);
+HWY_EXPORT(DepthSmallRunKernelOf);
 HWY_EXPORT(Farthest);
 HWY_EXPORT(FarthestSubtiles);
 HWY_EXPORT(OpenSubtiles);
@@ -696,6 +716,8 @@ bool depth_small(const Block& block, const SmallEdges& edges, const DepthPlane& 
 }
 
 DepthSmallKernel depth_small_kernel() { return HWY_DYNAMIC_DISPATCH(DepthSmallKernelOf)(); }
+
+DepthSmallRunKernel depth_small_run_kernel() { return HWY_DYNAMIC_DISPATCH(DepthSmallRunKernelOf)(); }
 
 std::uint64_t open_subtiles(const SubtileTest& t, const double* far) {
     return HWY_DYNAMIC_DISPATCH(OpenSubtiles)(t, far);

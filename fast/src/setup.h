@@ -46,12 +46,13 @@ struct Context {
     double coordinate_limit;                  // kFixedRange in pixels
     bool fixed_fits;                          // the viewport itself is inside kFixedRange
     DepthSmallKernel depth_small;             // depth_small_kernel(), found once for the call
+    DepthSmallRunKernel depth_small_run;      // and depth_small_run_kernel()
 };
 
 template <Fault F>
 Context make_context(Viewport vp, int samples, Precision precision) {
     Context c{vp, precision, subpixel_bits(precision), {}, {}, {}, 1, 0, 1, 0, 0, 0, 0, 0, 0, 0, false,
-              depth_small_kernel()};
+              depth_small_kernel(), depth_small_run_kernel()};
     for (SamplePoint o : sample_pattern(samples)) {
         if constexpr (F == Fault::integer_sample_positions) o = {o.x - 0.5, o.y - 0.5};
         c.offsets.push_back(o);

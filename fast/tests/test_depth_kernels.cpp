@@ -1,6 +1,7 @@
 // The SIMD depth tests (depth_block for every coverage kind, depth_runs, depth_small) against the scalar
 // one of scalar.h, sample by sample, on each SIMD target: the same stored depths, bounds and ids
-// afterwards, and the same samples left undecided. Then the tile's whole-buffer kernels.
+// afterwards, and the same samples left undecided; depth_small_run against depth_small. Then the tile's
+// whole-buffer kernels.
 #include "kernels.h"
 #include "scalar.h"
 
@@ -228,6 +229,82 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
         // The cases are not all trivial: many blocks write, many leave samples to the exact comparison.
         EXPECT_GT(written_blocks, 1500) << undecided_blocks;
         EXPECT_GT(undecided_blocks, 1500) << written_blocks;
+    }
+}
+
+// depth_small_run against depth_small on each of its entries in turn: a run of up to eight blocks of a
+// tile (their rows at their own offsets, overlapping one another), stored depths around the first entry's
+// plane, which most entries share (coplanar twins: ties left undecided), in both bound modes. The run stops
+// at the same entry with the same undecided rows, and leaves the tile's depths, bounds and ids the same; a
+// call from the entry after it goes on. Each entry's margin takes the call's stored_err, not its own.
+TEST(DepthKernels, SmallRunEqualsDepthSmallEntryByEntryOnEveryTarget) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        const DepthSmallRunKernel run_kernel = depth_small_run_kernel();
+        std::mt19937_64 rng(20261128);
+        int stops = 0, later_entries_tested = 0;
+        for (int trial = 0; trial < 400; ++trial) {
+            SCOPED_TRACE(::testing::Message() << "trial " << trial);
+            const bool per_sample = trial % 2 == 1;
+            const Block tile_block{0, 0, kRowLanes, kRowLanes, 0.5, 0.5};
+            const DepthPlane shared = random_plane(rng, tile_block);
+            Rows start = random_rows(rng, tile_block, shared, per_sample, false);
+            std::uniform_int_distribution<int> count(1, 8), side(1, 40), origin(0, 23), other(0, 3);
+            // Some stored depths 1.5e-12 from the shared plane's, beyond its own bound (1e-12) but within
+            // the margin the call's stored_err (also 1e-12) adds: left undecided.
+            for (int r = 0; r < kRowLanes; ++r)
+                for (int k = 0; k < kRowLanes; ++k)
+                    if (const int what = other(rng); what < 2 && start.ids[r * Rows::kStride + k] >= 0) {
+                        const double px = k + 0.5, py = r + 0.5;
+                        const double z = shared.z0 + (shared.a * (px - shared.x0) + shared.b * (py - shared.y0));
+                        start.z[r * Rows::kStride + k] = z + (what == 0 ? 1.5e-12 : -1.5e-12);
+                    }
+            std::vector<SmallRunEntry> entries(static_cast<std::size_t>(count(rng)));
+            for (std::size_t k = 0; k < entries.size(); ++k) {
+                const int i0 = origin(rng), j0 = origin(rng);
+                const Block b{i0, j0, side(rng), side(rng), 0.5, 0.5};
+                const DepthPlane p = other(rng) == 0 ? random_plane(rng, b) : shared;
+                const Coverage c = random_fixed(rng, b);
+                SmallEdges edges;
+                for (int e = 0; e < 3; ++e) {
+                    edges.e[e] = static_cast<std::int32_t>(c.e[e]);
+                    edges.dx[e] = static_cast<std::int32_t>(c.dx[e]);
+                    edges.dy[e] = static_cast<std::int32_t>(c.dy[e]);
+                }
+                entries[k] = {b, edges, p.z0, p.a, p.x0, p.b, p.y0, p.err, static_cast<std::int32_t>(7 + k),
+                              j0 * Rows::kStride + i0};
+            }
+            const double stored_err = 1e-12;
+            Rows want = start, got = start;
+            for (std::size_t first = 0; first < entries.size();) {
+                // depth_small one entry at a time, from `first` to the first that leaves samples undecided.
+                std::uint64_t want_open[kRowLanes], got_open[kRowLanes];
+                std::size_t stop = first;
+                for (; stop < entries.size(); ++stop) {
+                    const SmallRunEntry& e = entries[stop];
+                    const DepthPlane p{e.z0, e.a, e.x0, e.b, e.y0, e.err, stored_err, e.id};
+                    DepthRows rows = want.view();
+                    rows.z += e.at;
+                    rows.ids += e.at;
+                    if (rows.err) rows.err += e.at;
+                    if (depth_small(e.block, e.edges, p, rows, want_open)) break;
+                }
+                ASSERT_EQ(run_kernel(entries.data(), first, entries.size(), got.view(), stored_err, poisoned(got_open)),
+                          stop);
+                const bool any = stop < entries.size();
+                expect_same(got, want, got_open, want_open, any, any ? entries[stop].block : entries[0].block,
+                            "depth_small_run");
+                if (HasFatalFailure()) return;
+                stops += any;
+                later_entries_tested += any && stop + 1 < entries.size();
+                first = stop + 1;
+            }
+        }
+        hwy::SetSupportedTargetsForTest(0);
+        // The runs stop, and go on after a stop.
+        EXPECT_GT(stops, 200) << later_entries_tested;
+        EXPECT_GT(later_entries_tested, 100) << stops;
     }
 }
 
