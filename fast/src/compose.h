@@ -220,6 +220,13 @@ inline TileRect box_in(const SmallFixed& t, const TileRect& rect) {
     return {std::max(rect.i0, t.i_lo), std::min(rect.i1, t.i_hi), std::max(rect.j0, t.j_lo), std::min(rect.j1, t.j_hi)};
 }
 
+// The samples of a box (at one sample index), and whether its block takes the scalar depth test (scalar.h)
+// rather than a kernel.
+inline std::size_t samples_in(const TileRect& box) {
+    return static_cast<std::size_t>(box.i1 - box.i0 + 1) * static_cast<std::size_t>(box.j1 - box.j0 + 1);
+}
+inline bool scalar_block(const TileRect& box) { return samples_in(box) <= kScalarSamples; }
+
 // Lane k of a stamp setup's edges, in depth_small's form.
 inline SmallEdges small_edges(const StampEdges& set_up, int k) {
     SmallEdges out;
@@ -241,7 +248,7 @@ void rasterize_small(const SmallFixed& t, const Plane& pl, bool narrow, const St
     const Context& c = scene.c;
     const TileRect box = box_in(t, rect);
     const auto corners = [&] { return placed_of(t, c).v; };
-    const bool scalar = (box.i1 - box.i0 + 1) * (box.j1 - box.j0 + 1) <= kScalarSamples;
+    const bool scalar = scalar_block(box);
     if (narrow && set_up && !scalar) {  // the block is the same at every sample index
         rasterize_blocks<F>(corners, pl, t.id, box.i0, box.i1, box.j0, box.j1, rect, tile, scene,
                             [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows,
@@ -315,13 +322,14 @@ template <bool kPerSample>
 }
 
 // The narrow small triangles of a run without stamps whose edges the stamps' setup found (stamps.edges,
-// lane k for run[k]) and whose block is not the scalar test's (as rasterize_small would pick
-// depth_small), with one sample a pixel: one depth_small_run call composes them (`direct`: bit k for
-// run[k]), their bookkeeping done with the stamps'. With more samples a triangle has a block at each
-// sample index, and goes to rasterize_small.
+// lane k for run[k]) and whose block is not the scalar test's (those rasterize_small would give
+// depth_small), with one sample a pixel: one call of the run kernel (depth_small_run_kernel) composes
+// them (`triangles`: bit k for run[k], boxes[k] its box), their bookkeeping done with the stamps'. With
+// more samples a triangle has a block at each sample index, and goes to rasterize_small.
 struct DirectRun {
     std::uint32_t triangles = 0;
     std::size_t samples = 0;
+    TileRect boxes[kPlaneBatch];
     template <class Run>
     DirectRun(const Run& run, std::uint32_t narrow, const StampMasks& stamps, const TileRect& rect,
               const Context& c) {
@@ -329,23 +337,23 @@ struct DirectRun {
         for (std::uint32_t m = narrow & ~stamps.triangles; m != 0; m &= m - 1) {
             const int k = std::countr_zero(m);
             const TileRect box = box_in(run[k], rect);
-            const auto area = static_cast<std::size_t>(box.i1 - box.i0 + 1) * (box.j1 - box.j0 + 1);
-            if (area <= kScalarSamples) continue;
+            if (scalar_block(box)) continue;
             triangles |= std::uint32_t{1} << k;
-            samples += area;
+            samples += samples_in(box);
+            boxes[k] = box;
         }
     }
 };
 
 // The small triangles run[k] (their planes[k]; narrow: bit k for a narrow one): those whose stamps were
-// found (stamps.triangles) test depth on the masks' bits, the direct ones (DirectRun) go to
-// depth_small_run together, the others to rasterize_small; the (z, id) order is total, so the order they
-// are composed in does not matter. The bookkeeping of the stamps and the direct ones is done once for the
-// run, before any is composed: their blocks are counted for the far depth, and of their finite bounds the
-// largest and the smallest admitted, which leaves the tile's bound above each and switches it to a bound
-// per sample if one of them is far from it (an infinite one is admitted apart: admitted in their place it
-// would raise the tile's bound not at all). Their planes may then carry a larger tile bound than one at a
-// time would: still a bound.
+// found (stamps.triangles) test depth on the masks' bits, the direct ones (DirectRun) go to the run kernel
+// together, the others to rasterize_small; the (z, id) order is total, so the order they are composed in
+// does not matter. The bookkeeping of the stamps and the direct ones is done once for the run, before any
+// is composed (also for those hierarchical z then skips): their blocks are counted for the far depth, and
+// of their finite bounds the largest and the smallest admitted, which leaves the tile's bound above each
+// and switches it to a bound per sample if one of them is far from it (an infinite one is admitted apart:
+// admitted in their place it would raise the tile's bound not at all). Their planes may then carry a larger
+// tile bound than one at a time would: still a bound.
 template <Fault F>
 void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::uint32_t narrow,
                    const StampMasks& stamps, const TileRect& rect, TileBuffer& tile, const SceneView& scene) {
@@ -401,7 +409,7 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
         const int k = std::countr_zero(m);
         const SmallFixed& t = run[k];
         const Plane& pl = planes[k];
-        const TileRect box = box_in(t, rect);
+        const TileRect& box = direct.boxes[k];
         if (behind_tile(pl, c, tile, box.i0, box.i1, box.j0, box.j1)) continue;
         entries[n] = {{box.i0, box.j0, box.i1 - box.i0 + 1, box.j1 - box.j0 + 1, c.offsets[0].x, c.offsets[0].y},
                       small_edges(stamps.edges[0], k),

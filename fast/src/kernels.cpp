@@ -458,6 +458,7 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     // AVX-512's masks are bits: a row's coverage goes from the edges' mask to the depth vectors' by a
     // shift of the mask register, 8 lanes (through a general register it cost 2% of a small triangle's
     // time; on AVX2 the bits' way took 8% more instructions than the lanes').
+    static_assert(hn::MaxLanes(D()) == 8 && hn::MaxLanes(DI32()) == 16, "a 16-lane mask shifted by 8");
     const int per32 = lanes32 / lanes;
     const auto each_vector = [&](auto visit) {
         SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {

@@ -1,10 +1,10 @@
 // The inner loops over a block of samples (up to 64 x 64 pixels, one sample index), in SIMD with runtime
-// dispatch (Highway): coverage by edge functions and the z-buffer test, one call per triangle and tile
-// (integer edges find each row's run of covered samples first, then depth-test the run, or a narrow
-// block's whole rows masked by it; the other kinds are fused with the test). Bit k of a row mask stands
-// for the sample of pixel i0 + k. Every lane computes exactly what the scalar definition in the comments
-// computes (integers, or the same IEEE operations without contraction), so the result does not depend on
-// the instruction set.
+// dispatch (Highway): coverage by edge functions and the z-buffer test, one call per triangle and tile, or
+// per run of a tile's small triangles (depth_small_run_kernel) (integer edges find each row's run of
+// covered samples first, then depth-test the run, or a narrow block's whole rows masked by it; the other
+// kinds are fused with the test). Bit k of a row mask stands for the sample of pixel i0 + k. Every lane
+// computes exactly what the scalar definition in the comments computes (integers, or the same IEEE
+// operations without contraction), so the result does not depend on the instruction set.
 #pragma once
 
 #include <cstddef>
@@ -123,7 +123,7 @@ using DepthSmallKernel = bool (*)(const Block&, const SmallEdges&, const DepthPl
                                   std::uint64_t*);
 DepthSmallKernel depth_small_kernel();
 
-// One of a run's small triangles for depth_small_run: depth_small's block, edges and plane (but for the
+// One of a run's small triangles for the run kernel: depth_small's block, edges and plane (but for the
 // plane's stored_err, the call's), and where the block's first sample is in the tile's rows.
 struct SmallRunEntry {
     Block block;
@@ -133,13 +133,13 @@ struct SmallRunEntry {
     std::ptrdiff_t at;
 };
 
-// depth_small on entries[k] for k from `first` up to `count`, in order, on the tile's rows (from its first
-// sample), their planes' stored_err the tile's: stops at the first entry whose test left samples
-// undecided, and answers its index (undecided holds its rows', as depth_small's), or `count`. The exact
-// order the caller then gives them may store a depth of a larger bound, which the next call's stored_err
-// takes in. One call for a run of triangles: a call each, with the steps around it, had cost 200 of a
-// small triangle's 1600 instructions. On the best target the CPU supports, resolved once, as
-// depth_small_kernel().
+// The run kernel, kernel(entries, first, count, rows, stored_err, undecided): depth_small on entries[k] for
+// k from `first` up to `count`, in order, on the tile's rows (from its first sample), their planes'
+// stored_err the call's, the tile's: stops at the first entry whose test left samples undecided, and
+// answers its index (undecided holds its rows', as depth_small's), or `count`. The exact order the caller
+// then gives that entry may store a depth of a larger bound, which the next call's stored_err takes in. One
+// call for a run of triangles: a call each, with the steps around it, had cost 200 of a small triangle's
+// 1600 instructions. On the best target the CPU supports, resolved once, as depth_small_kernel().
 using DepthSmallRunKernel = std::size_t (*)(const SmallRunEntry*, std::size_t, std::size_t, const DepthRows&,
                                             double, std::uint64_t*);
 DepthSmallRunKernel depth_small_run_kernel();
