@@ -522,13 +522,15 @@ TEST(DepthKernels, FarthestSubtilesTakesEachSubtilesLargestOnEveryTarget) {
     hwy::SetSupportedTargetsForTest(0);
 }
 
-// The kernel a render resolves once (Context::depth_small) is the selected target's own: a different
-// function on each target, as the tests that compare the targets' output need.
-TEST(DepthKernels, SmallKernelIsTheSelectedTargets) {
+// The kernels a render resolves once (Context::depth_small, Context::depth_small_run) are the selected
+// target's own: a different function on each target, as the tests that compare the targets' output need.
+TEST(DepthKernels, SmallKernelsAreTheSelectedTargets) {
     std::set<DepthSmallKernel> kernels;
+    std::set<DepthSmallRunKernel> run_kernels;
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
         hwy::SetSupportedTargetsForTest(target);
         EXPECT_TRUE(kernels.insert(depth_small_kernel()).second) << hwy::TargetName(target);
+        EXPECT_TRUE(run_kernels.insert(depth_small_run_kernel()).second) << hwy::TargetName(target);
     }
     hwy::SetSupportedTargetsForTest(0);
 }
