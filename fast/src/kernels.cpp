@@ -603,10 +603,16 @@ void FarthestSubtiles(const double* z, std::ptrdiff_t stride, int width, int row
     for (int x = 0; x < width; x += kSubtile) {
         const int n = std::min(kSubtile, width - x);
         auto largest = lowest;
-        for (int r = 0; r < rows; ++r)
-            for (int l = 0; l < n; l += lanes)
-                largest = hn::Max(largest, hn::IfThenElse(hn::FirstN(d, static_cast<std::size_t>(n - l)),
-                                                          hn::LoadU(d, z + r * stride + x + l), lowest));
+        // A whole subtile's rows, the common case, without masking the lanes (a tenth of the refresh).
+        if (n == kSubtile) {
+            for (int r = 0; r < rows; ++r)
+                for (int l = 0; l < n; l += lanes) largest = hn::Max(largest, hn::LoadU(d, z + r * stride + x + l));
+        } else {
+            for (int r = 0; r < rows; ++r)
+                for (int l = 0; l < n; l += lanes)
+                    largest = hn::Max(largest, hn::IfThenElse(hn::FirstN(d, static_cast<std::size_t>(n - l)),
+                                                              hn::LoadU(d, z + r * stride + x + l), lowest));
+        }
         far[x / kSubtile] = hn::GetLane(hn::MaxOfLanes(d, largest));
     }
 }
