@@ -419,7 +419,9 @@ void rasterize_run(std::span<const SmallFixed> run, const Plane* planes, std::ui
     }
     std::uint64_t undecided[kTile];
     const DepthRows rows = tile.rows_at(0);
-    for (std::size_t k = 0; (k = c.depth_small_run(entries, k, n, rows, tile.stored_err, undecided)) < n; ++k) {
+    // No call where hierarchical z left no entry.
+    for (std::size_t k = 0; k < n && (k = c.depth_small_run(entries, k, n, rows, tile.stored_err, undecided)) < n;
+         ++k) {
         const SmallRunEntry& e = entries[k];
         const DepthPlane p{e.z0, e.a, e.x0, e.b, e.y0, e.err, tile.stored_err, e.id};
         resolve_rows<F>(placed_of(run[which[k]], c).v, p, e.block, undecided, tile, static_cast<std::size_t>(e.at),

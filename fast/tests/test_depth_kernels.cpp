@@ -95,6 +95,17 @@ Coverage random_fixed(std::mt19937_64& rng, const Block& b) {
     return c;
 }
 
+// Integer edges of Coverage::Kind::fixed that fit 32 bits (random_fixed's), in depth_small's form.
+SmallEdges small_edges_of(const Coverage& c) {
+    SmallEdges small;
+    for (int k = 0; k < 3; ++k) {
+        small.e[k] = static_cast<std::int32_t>(c.e[k]);
+        small.dx[k] = static_cast<std::int32_t>(c.dx[k]);
+        small.dy[k] = static_cast<std::int32_t>(c.dy[k]);
+    }
+    return small;
+}
+
 // Float edges of a random counter-clockwise triangle that overlaps the block.
 Coverage random_float(std::mt19937_64& rng, const Block& b, bool single) {
     std::uniform_real_distribution<double> x(b.i0 - 8.0, b.i0 + b.width + 8.0), y(b.j0 - 8.0, b.j0 + b.rows + 8.0);
@@ -175,12 +186,7 @@ void expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage& c
     ASSERT_EQ(depth_runs(b, covered, p, runs.view(), poisoned(got_open)), want_any);
     expect_same(runs, want, got_open, want_open, want_any, b, "depth_runs");
     if (cov.kind != Coverage::Kind::fixed) return;
-    SmallEdges small;
-    for (int k = 0; k < 3; ++k) {
-        small.e[k] = static_cast<std::int32_t>(cov.e[k]);
-        small.dx[k] = static_cast<std::int32_t>(cov.dx[k]);
-        small.dy[k] = static_cast<std::int32_t>(cov.dy[k]);
-    }
+    const SmallEdges small = small_edges_of(cov);
     Rows lanes = start;
     ASSERT_EQ(depth_small(b, small, p, lanes.view(), poisoned(got_open)), want_any);
     expect_same(lanes, want, got_open, want_open, want_any, b, "depth_small");
@@ -265,14 +271,7 @@ TEST(DepthKernels, SmallRunEqualsDepthSmallEntryByEntryOnEveryTarget) {
                 const int i0 = origin(rng), j0 = origin(rng);
                 const Block b{i0, j0, side(rng), side(rng), 0.5, 0.5};
                 const DepthPlane p = other(rng) == 0 ? random_plane(rng, b) : shared;
-                const Coverage c = random_fixed(rng, b);
-                SmallEdges edges;
-                for (int e = 0; e < 3; ++e) {
-                    edges.e[e] = static_cast<std::int32_t>(c.e[e]);
-                    edges.dx[e] = static_cast<std::int32_t>(c.dx[e]);
-                    edges.dy[e] = static_cast<std::int32_t>(c.dy[e]);
-                }
-                entries[k] = {b, edges, p.z0, p.a, p.x0, p.b, p.y0, p.err, static_cast<std::int32_t>(7 + k),
+                entries[k] = {b, small_edges_of(random_fixed(rng, b)), p.z0, p.a, p.x0, p.b, p.y0, p.err, static_cast<std::int32_t>(7 + k),
                               j0 * Rows::kStride + i0};
             }
             const double stored_err = 3e-12;
