@@ -461,8 +461,14 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     static_assert(hn::MaxLanes(D()) == 8 && hn::MaxLanes(DI32()) == 16, "a 16-lane mask shifted by 8");
     const int per32 = lanes32 / lanes;
     const auto each_vector = [&](auto visit) {
+        // py = j + sy stepped from row to row: exact, as in DepthOnRuns.
+        auto py = hn::Set(d, double(b.j0) + b.sy);
+        VD b_dy;
         SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {
-            const auto b_dy = lanes_test.b_dy(hn::Set(d, double(b.j0 + r) + b.sy));
+            if (k == 0) {
+                b_dy = lanes_test.b_dy(py);
+                py = hn::Add(py, hn::Set(d, 1.0));
+            }
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
             for (int h = 0, v = k * per32; h < per32 && v < kVectors; ++h, ++v)
                 visit(r, v * lanes, MD{static_cast<__mmask8>(h == 0 ? in.raw : _kshiftri_mask16(in.raw, 8))}, a_dx[v],
@@ -479,9 +485,9 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
         hn::Store(hn::VecFromMask(di32, in), di32, inside + r * columns + k * lanes32);
     });
     const auto each_vector = [&](auto visit) {
-        double py = double(b.j0) + b.sy;
-        for (int r = 0; r < b.rows; ++r, py += 1) {
-            const auto b_dy = lanes_test.b_dy(hn::Set(d, py));
+        auto py = hn::Set(d, double(b.j0) + b.sy);
+        for (int r = 0; r < b.rows; ++r, py = hn::Add(py, hn::Set(d, 1.0))) {
+            const auto b_dy = lanes_test.b_dy(py);
             const auto row = DepthLanes<kPerSample>::row_of(rows, r * rows.stride);
             for (int v = 0; v < kVectors; ++v) {
                 const auto lanes32_at = hn::LoadU(d32, inside + r * columns + v * lanes);
