@@ -461,7 +461,7 @@ HWY_INLINE bool DepthOnColumns(const Block b, const SmallEdges& edges, const Dep
     static_assert(hn::MaxLanes(D()) == 8 && hn::MaxLanes(DI32()) == 16, "a 16-lane mask shifted by 8");
     const int per32 = lanes32 / lanes;
     const auto each_vector = [&](auto visit) {
-        // py = j + sy stepped from row to row: exact, as in DepthOnRuns.
+        // py = j + sy, stepped at each row's first edge vector: exact, as in DepthOnRuns.
         auto py = hn::Set(d, double(b.j0) + b.sy);
         VD b_dy;
         SmallEdgeLanes(edges, b, vectors32, [&](auto in, int r, int k) {
