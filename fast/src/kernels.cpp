@@ -378,8 +378,9 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block b, std::uint6
 // for its vectors (row r, from column k, the covered lanes `mask` and the plane's column terms there):
 // the samples are written where decided nearer, and only a block that left some undecided (rarely one)
 // is visited again to find them; a plane whose bound is infinite decides none. The visitors are always
-// inlined: a call takes their vectors by value on the stack, which clang's AddressSanitizer aligns to 32
-// bytes only, and an AVX-512 vector stored there faulted (corpus/depth/fuzzed-unbounded-plane-column-kernel).
+// inlined: a call takes their vectors by value on the stack, which clang's AddressSanitizer may align to
+// 32 bytes only (llvm/llvm-project#91565), and an AVX-512 vector stored there faulted in the fuzz build
+// (corpus/depth/fuzzed-unbounded-plane-column-kernel).
 template <bool kPerSample, class EachVector>
 HWY_INLINE bool TwoPasses(const DepthLanes<kPerSample>& lanes_test, const DepthPlane& p, int rows,
                           EachVector each_vector, std::uint64_t* undecided) {
