@@ -377,24 +377,21 @@ HWY_INLINE void SmallEdgeRuns(const SmallEdges& edges, const Block b, std::uint6
 // The depth test of a block in two passes, each_vector(visit) calling visit(r, k, mask, a_dx, row, b_dy)
 // for its vectors (row r, from column k, the covered lanes `mask` and the plane's column terms there):
 // the samples are written where decided nearer, and only a block that left some undecided (rarely one)
-// is visited again to find them; a plane whose bound is infinite decides none. The visitors are always
-// inlined: a call takes their vectors by value on the stack, which clang's AddressSanitizer may align to
-// 32 bytes only (llvm/llvm-project#91565), and an AVX-512 vector stored there faulted in the fuzz build
-// (corpus/depth/fuzzed-unbounded-plane-column-kernel).
+// is visited again to find them; a plane whose bound is infinite decides none.
 template <bool kPerSample, class EachVector>
 HWY_INLINE bool TwoPasses(const DepthLanes<kPerSample>& lanes_test, const DepthPlane& p, int rows,
                           EachVector each_vector, std::uint64_t* undecided) {
     const D d;
     if (p.err < std::numeric_limits<double>::infinity()) {
         auto closest = hn::Set(d, std::numeric_limits<double>::infinity());
-        each_vector([&](int, int k, MD mask, VD a_dx, auto row, VD b_dy) __attribute__((always_inline)) {
+        each_vector([&](int, int k, MD mask, VD a_dx, auto row, VD b_dy) {
             lanes_test.write_decided(a_dx, b_dy, mask, row, k, closest);
         });
         if (!lanes_test.any_undecided(closest)) return false;
     }
     std::fill_n(undecided, rows, std::uint64_t{0});
     std::uint64_t any = 0;
-    each_vector([&](int r, int k, MD mask, VD a_dx, auto row, VD b_dy) __attribute__((always_inline)) {
+    each_vector([&](int r, int k, MD mask, VD a_dx, auto row, VD b_dy) {
         const std::uint64_t bits = mask_bits(d, lanes_test.undecided_after(a_dx, b_dy, mask, row, k));
         undecided[r] |= bits << k;
         any |= bits;
