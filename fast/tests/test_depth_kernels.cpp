@@ -271,8 +271,8 @@ TEST(DepthKernels, SmallRunEqualsDepthSmallEntryByEntryOnEveryTarget) {
                 const int i0 = origin(rng), j0 = origin(rng);
                 const Block b{i0, j0, side(rng), side(rng), 0.5, 0.5};
                 const DepthPlane p = other(rng) == 0 ? random_plane(rng, b) : shared;
-                entries[k] = {b, small_edges_of(random_fixed(rng, b)), p.z0, p.a, p.x0, p.b, p.y0, p.err, static_cast<std::int32_t>(7 + k),
-                              j0 * Rows::kStride + i0};
+                entries[k] = {b, small_edges_of(random_fixed(rng, b)), p.z0, p.a, p.x0, p.b, p.y0, p.err,
+                              static_cast<std::int32_t>(7 + k), j0 * Rows::kStride + i0};
             }
             const double stored_err = 3e-12;
             Rows want = start, got = start;
