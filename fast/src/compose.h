@@ -135,10 +135,10 @@ struct TrimmedRows {
 // What every path shares: triangle `id` (its depth plane) into the tile's z-buffer over pixels
 // [i0, i1] x [j0, j1] of its bounding box, behind hierarchical z, by compose_blocks; with `trim`, behind
 // its subtiles too, which trim the rows (a big triangle: a small one's box meets a subtile or a few).
-// Always inlined: as a call of its own, its arguments and the plane went through the stack, a tenth of a
-// small triangle's setup.
+// Answers whether it was composed, not hidden whole. Always inlined: as a call of its own, its arguments
+// and the plane went through the stack, a tenth of a small triangle's setup.
 template <Fault F, class CornersOf, class BlockDepth>
-[[gnu::always_inline]] inline void rasterize_blocks(CornersOf corners, const Plane& pl, std::int32_t id, int i0,
+[[gnu::always_inline]] inline bool rasterize_blocks(CornersOf corners, const Plane& pl, std::int32_t id, int i0,
                                                     int i1, int j0, int j1, const TileRect& rect, TileBuffer& tile,
                                                     const SceneView& scene, BlockDepth depth,
                                                     TrimmedRows* trim = nullptr) {
@@ -148,18 +148,19 @@ template <Fault F, class CornersOf, class BlockDepth>
         return rasterize_blocks<Fault::none>(corners, halved, id, i0, i1, j0, j1, rect, tile, scene, depth, trim);
     }
     const Context& c = scene.c;
-    if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return;
+    if (behind_tile(pl, c, tile, i0, i1, j0, j1)) return false;
     if (trim) {
         if (tile.subtiles_due)
             tile.refresh_subtiles(static_cast<int>(c.offsets.size()), rect.i1 - rect.i0 + 1, rect.j1 - rect.j0 + 1);
         const std::uint64_t open = in_front_subtiles(pl, c, tile, rect.i0, rect.j0, i0, i1, j0, j1);
-        if (open == 0) return;
+        if (open == 0) return false;
         trim->trim(open, rect, i0, i1, j0, j1);
     }
     count_block(tile, static_cast<std::size_t>(i1 - i0 + 1) * (j1 - j0 + 1) * c.offsets.size(), rect, c);
     tile.admit(pl.err);
     const DepthPlane plane{pl.z0, pl.a, pl.x0, pl.b, pl.y0, pl.err, tile.stored_err, id};
     compose_blocks<F>(corners, plane, i0, i1, j0, j1, rect, tile, scene, depth);
+    return true;
 }
 
 // The z-buffer test of block b for integer edges (edges, their steps) straight from a fixed setup,
@@ -188,7 +189,8 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
     std::span<const Span> wide;  // a partial tile's, found at the first sample index, past hierarchical z
     std::uint64_t masks[kTile];
     TrimmedRows trim;
-    rasterize_blocks<F>(
+    const bool subtiles = t.subtiles && (i1 - i0 + 1) * (j1 - j0 + 1) >= kSubtileBox;
+    const bool composed = rasterize_blocks<F>(
         [&t]() -> const Corners& { return t.p.v; }, t.plane, id, i0, i1, j0, j1, rect, tile, scene,
         // Inlined (GCC's spelling for a lambda): out of line, medium triangles took 1% more instructions.
         [&](const Block& b, int s, const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided)
@@ -212,7 +214,9 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
             return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
                           : depth_block(b, cov, plane, rows, undecided);
         },
-        t.subtiles && (i1 - i0 + 1) * (j1 - j0 + 1) >= kSubtileBox ? &trim : nullptr);
+        subtiles ? &trim : nullptr);
+    if (composed && subtiles && t.p.path == Path::fixed)
+        cover_subtiles(t.plane, t.fixed, c, tile, rect.i0, rect.j0, i0, i1, j0, j1);
 }
 
 // A small triangle's binned record: its box within the tile.

@@ -656,6 +656,41 @@ std::uint64_t OpenSubtiles(const SubtileTest& t, const double* far) {
     return open & box;
 }
 
+void LowerCoveredSubtiles(const SubtileCover& t, double* far) {
+    const hn::CappedTag<double, kSubtiles> d;
+    const hn::RebindToSigned<decltype(d)> di;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const bool high_x = t.a >= 0, high_y = t.b >= 0;  // the farthest corner
+    const auto z0 = hn::Set(d, t.z0), a = hn::Set(d, t.a), x0 = hn::Set(d, t.x0);
+    const auto bx0 = hn::Set(di, t.bx0), bx1 = hn::Set(di, t.bx1);
+    for (int k = t.bx0 / lanes * lanes; k <= t.bx1; k += lanes) {
+        const auto bx = hn::Add(hn::Iota(di, 0), hn::Set(di, k));  // each lane's subtile column
+        const auto in_box = hn::RebindMask(d, hn::Not(hn::Or(hn::Gt(bx0, bx), hn::Gt(bx, bx1))));
+        // Exact: integers and sixteenths.
+        const auto first = hn::Add(hn::ConvertTo(d, hn::Mul(bx, hn::Set(di, kSubtile))), hn::Set(d, double(t.ti)));
+        const auto px = hn::Add(first, hn::Set(d, high_x ? kSubtile - 1 + t.ox_max : t.ox_min));
+        const auto a_dx = hn::Mul(a, hn::Sub(px, x0));
+        // Each edge's least value in each lane's subtile of the first band; integer vectors wrap around, and
+        // the lanes outside the box, which may, are masked off.
+        hn::Vec<decltype(di)> edge[3], down[3];
+        for (int e = 0; e < 3; ++e) {
+            edge[e] = hn::Add(hn::Set(di, t.lowest[e]), hn::Mul(hn::Sub(bx, bx0), hn::Set(di, t.across[e])));
+            down[e] = hn::Set(di, t.down[e]);
+        }
+        for (int by = t.by0; by <= t.by1; ++by) {
+            const double row = t.tj + by * kSubtile;
+            const double py = high_y ? row + (kSubtile - 1 + t.oy_max) : row + t.oy_min;
+            const auto farthest = hn::Add(z0, hn::Add(a_dx, hn::Set(d, t.b * (py - t.y0))));
+            // All three are >= 0 exactly when their bitwise or is > -1.
+            const auto inside = hn::RebindMask(d, hn::Gt(hn::Or(hn::Or(edge[0], edge[1]), edge[2]), hn::Set(di, -1)));
+            double* at = far + by * kSubtiles + k;
+            const auto old = hn::LoadU(d, at);
+            hn::StoreU(hn::IfThenElse(hn::And(inside, in_box), hn::Min(old, farthest), old), d, at);
+            for (int e = 0; e < 3; ++e) edge[e] = hn::Add(edge[e], down[e]);
+        }
+    }
+}
+
 void FillFar(double* z, std::size_t n) {
     const D d;
     const std::size_t lanes = hn::Lanes(d);
@@ -706,6 +741,7 @@ HWY_EXPORT(DepthSmallRunKernelOf);
 HWY_EXPORT(Farthest);
 HWY_EXPORT(FarthestSubtiles);
 HWY_EXPORT(OpenSubtiles);
+HWY_EXPORT(LowerCoveredSubtiles);
 HWY_EXPORT(FillFar);
 HWY_EXPORT(CopyOut);
 
@@ -734,6 +770,10 @@ DepthSmallRunKernel depth_small_run_kernel() { return HWY_DYNAMIC_DISPATCH(Depth
 
 std::uint64_t open_subtiles(const SubtileTest& t, const double* far) {
     return HWY_DYNAMIC_DISPATCH(OpenSubtiles)(t, far);
+}
+
+void lower_covered_subtiles(const SubtileCover& t, double* far) {
+    HWY_DYNAMIC_DISPATCH(LowerCoveredSubtiles)(t, far);
 }
 
 double farthest(const double* z, std::size_t n) {

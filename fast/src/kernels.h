@@ -165,6 +165,24 @@ struct SubtileTest {
 // the margin. The whole tile's test's arithmetic (behind_tile, tile_buffer.h), lane by lane.
 std::uint64_t open_subtiles(const SubtileTest& t, const double* far);
 
+// A big triangle just composed into a tile, against the far depths of the subtiles in [bx0, bx1] x
+// [by0, by1] (whole ones, counted from the tile's pixel (ti, tj)): its plane as in SubtileTest and, for
+// each of its integer edges, the least value over the samples of subtile (bx0, by0) and its steps from
+// one subtile to the next across and down (exact: the edge is linear, least at the corner its signs pick).
+struct SubtileCover {
+    double z0, a, x0, b, y0;
+    double ox_min, ox_max, oy_min, oy_max;
+    std::int64_t lowest[3], across[3], down[3];
+    int ti, tj, bx0, bx1, by0, by1;
+};
+
+// far[kSubtiles by + bx] lowered to the plane's value at the farthest corner of the samples' rectangle of
+// subtile (bx, by) for every subtile whose samples all lie inside the three edges (all edge values >= 0):
+// its far depth found without reading the tile, once the triangle is composed (cover_subtiles,
+// tile_buffer.h, says why it bounds the subtile). Triangles composed nearest first left the far depths
+// found every few of them a quarter more samples to test (the MOC peer's large scene).
+void lower_covered_subtiles(const SubtileCover& t, double* far);
+
 // The largest z[k] for k < n (+infinity when any slot is empty). The maximum is exact, so the order the
 // lanes take does not matter.
 double farthest(const double* z, std::size_t n);

@@ -8,9 +8,13 @@
 #include <hwy/targets.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
+#include <span>
+#include <vector>
 
 namespace rast::fast::detail {
 namespace {
@@ -202,6 +206,95 @@ TEST(Subtiles, RefreshFarFindsTheSubtilesOrStopsAtAnEmptyBand) {
     EXPECT_TRUE(tile.subtiles_due);
     expect_planted_band(tile, 0);
     EXPECT_EQ(tile.far, kInf);
+}
+
+// Whether every depth tile holds in the subtile at bit `at` (or anywhere in it, at = -1) is at most its far
+// depth f plus stored_err when exact (what behind_tile and open_subtiles rely on), f the subtile's (or the
+// tile's); an empty sample only under +infinity. A stored double at most f proves it at once (its exact
+// depth is within stored_err of it); otherwise the exact depth, rounded to nearest, is compared.
+bool far_bounds(TileBuffer& tile, const TileRect& rect, const Context& c, std::span<const Triangle> triangles,
+                int at) {
+    const double f = at < 0 ? tile.far : tile.subtile_far[at];
+    if (f == kInf) return true;
+    const double limit = std::nextafter(f + tile.stored_err, kInf);
+    const int x0 = at < 0 ? 0 : at % kSubtiles * kSubtile, y0 = at < 0 ? 0 : at / kSubtiles * kSubtile;
+    const int size = at < 0 ? kTile : kSubtile;
+    for (int s = 0; s < static_cast<int>(c.offsets.size()); ++s)
+        for (int row = y0; row < y0 + size; ++row)
+            for (int col = x0; col < x0 + size; ++col) {
+                const std::size_t slot = tile.at(s, row, col);
+                const std::int32_t id = tile.ids[slot];
+                if (id < 0) return false;
+                if (tile.z[slot] <= f) continue;
+                const Corners v = snapped(triangles[static_cast<std::size_t>(id)], c.precision).v;
+                const double px = rect.i0 + col + c.offsets[s].x, py = rect.j0 + row + c.offsets[s].y;
+                if (!(tile.planes.depth(id, v, px, py) <= limit)) return false;
+            }
+    return true;
+}
+
+// Big triangles composed one by one into the tile at (64, 64) of a 128 x 128 viewport, 1 and 4 samples,
+// fixed8: a random background and random triangles of either slope, and copies of the one before with
+// its corners turned (the same exact plane, a double plane of its own, ties to the lower id): after each,
+// the far depths the covered subtiles took from the plane (without a refresh of the tile) bound what
+// their subtiles hold, and so does the tile's. Most triangles cover some subtile whole.
+TEST(Subtiles, CoveredSubtilesFarDepthsBoundWhatTheyHoldOnEveryTarget) {
+    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        long lowered = 0, checked = 0;
+        for (const int samples : {1, 4}) {
+            const Context c = make_context<Fault::none>({128, 128}, samples, Precision::fixed8);
+            const TileRect rect{64, 127, 64, 127};
+            std::mt19937_64 rng(20261128 + static_cast<std::uint64_t>(samples));
+            std::uniform_real_distribution<double> unit(0, 1);
+            for (int scene = 0; scene < 8; ++scene) {
+                std::vector<Triangle> triangles;
+                const double back = 0.9 + 0.05 * unit(rng);
+                triangles.push_back(Triangle{{{{-200, -200, back}, {400, -200, back}, {-200, 400, back + 0.01}}}});
+                while (triangles.size() < 24) {
+                    if (triangles.size() > 1 && rng() % 3 == 0) {
+                        const auto& v = triangles.back().v;
+                        triangles.push_back(Triangle{{v[1], v[2], v[0]}});
+                        continue;
+                    }
+                    const double cx = 64 + 64 * unit(rng), cy = 64 + 64 * unit(rng), r = 70 + 80 * unit(rng);
+                    const double turn = 6.283185307179586 * unit(rng);
+                    Triangle t;
+                    for (int k = 0; k < 3; ++k) {
+                        const double angle = turn + k * 2.0943951023931953;
+                        t.v[static_cast<std::size_t>(k)] = {cx + r * std::cos(angle), cy + r * std::sin(angle),
+                                                            0.1 + 0.8 * unit(rng)};
+                    }
+                    triangles.push_back(t);
+                }
+                const SceneView view{triangles, c};
+                TileBuffer tile;
+                tile.fit(1, samples, c.vp);
+                tile.clear();
+                for (std::size_t id = 0; id < triangles.size(); ++id) {
+                    const std::optional<Placed> p = place<Fault::none>(triangles[id], c);
+                    ASSERT_TRUE(p && p->path == Path::fixed);
+                    const detail::Setup t = setup_triangle<Fault::none>(*p, c, true);
+                    double before[kSubtiles * kSubtiles];
+                    std::copy(std::begin(tile.subtile_far), std::end(tile.subtile_far), before);
+                    const std::size_t since = tile.since_far;
+                    rasterize<Fault::none>(t, static_cast<std::int32_t>(id), rect, tile, view);
+                    ASSERT_TRUE(far_bounds(tile, rect, c, triangles, -1)) << "triangle " << id;
+                    if (tile.since_far <= since || tile.subtiles_due) continue;  // refreshed: read from the tile
+                    for (int at = 0; at < kSubtiles * kSubtiles; ++at) {
+                        if (!(tile.subtile_far[at] < before[at])) continue;
+                        ++lowered;
+                        ASSERT_TRUE(far_bounds(tile, rect, c, triangles, at)) << "triangle " << id << ", " << at;
+                    }
+                    ++checked;
+                }
+            }
+        }
+        EXPECT_GT(checked, 100);
+        EXPECT_GT(lowered, 2000);
+    }
+    hwy::SetSupportedTargetsForTest(0);
 }
 
 // Which triangles test subtiles: one covering an eighth of its bounding box or more. A right triangle
