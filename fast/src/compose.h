@@ -105,15 +105,19 @@ template <Fault F, class CornersOf, class BlockDepth>
     for (int s = 0; s < samples; ++s) block(s);
 }
 
-// A big triangle's rows of its box in a tile as hierarchical z's subtiles trim them: keep[r] holds the
-// columns of row j0 + r (bit k: pixel i0 + k) from the first subtile of its band the triangle may be in
-// front in to the last, none in a band it is behind in everywhere. One run a row, as the kernels take
-// it: hidden subtiles between open ones are tested all the same (the depth test decides them farther).
+// A big triangle's rows of its box in a tile as hierarchical z's subtiles trim them: the rows from the
+// first band of subtiles the triangle may be in front in to the last, and keep[r] the columns of row
+// j0 + r (bit k: pixel i0 + k) from the first subtile of its band the triangle may be in front in to the
+// last, none in a band it is behind in everywhere. One run a row, as the kernels take it: hidden subtiles
+// between open ones are tested all the same (the depth test decides them farther).
 struct TrimmedRows {
-    bool trimmed = false;  // whether any row lost a column
+    bool trimmed = false;  // whether any row left lost a column
     std::uint64_t keep[kTile];
-    // From the subtiles `open` (in_front_subtiles' bits) of pixels [i0, i1] x [j0, j1] of the tile at rect.
-    void trim(std::uint64_t open, const TileRect& rect, int i0, int i1, int j0, int j1) {
+    // From the subtiles `open` (in_front_subtiles' bits, not none) of pixels [i0, i1] x [j0, j1] of the
+    // tile at rect; j0 and j1 become the rows left.
+    void trim(std::uint64_t open, const TileRect& rect, int i0, int i1, int& j0, int& j1) {
+        j0 = std::max(j0, rect.j0 + std::countr_zero(open) / kSubtiles * kSubtile);
+        j1 = std::min(j1, rect.j0 + ((63 - std::countl_zero(open)) / kSubtiles + 1) * kSubtile - 1);
         const std::uint64_t whole = first_bits(i1 - i0 + 1);
         trimmed = false;
         for (int y = j0; y <= j1;) {

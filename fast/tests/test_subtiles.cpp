@@ -126,21 +126,34 @@ TEST(Subtiles, OpenSubtilesTakesEachSubtilesNearestCorner) {
 // The rows a big triangle's subtiles leave, by hand, in the tile at (64, 128) over the box of pixels
 // [70, 100] x [131, 148] (bands 0 to 2, subtile columns 0 to 4): band 0 open in columns 1 and 3 keeps
 // pixels 72 to 95 (bits 2 to 25 from 70); band 1 closed keeps nothing; band 2 open in columns 0 and 4
-// keeps the whole row (70 to 100) of rows 144 to 148.
+// keeps the whole row (70 to 100) of rows 144 to 148. Only band 1 open, in column 2: its rows alone
+// (136 to 143) are left, pixels 80 to 87.
 TEST(Subtiles, TrimmedRowsKeepEachBandsOpenSpan) {
     const TileRect rect{64, 127, 128, 191};
     TrimmedRows rows;
+    int j0 = 131, j1 = 148;
     const std::uint64_t open = 0b01010u | std::uint64_t{0b10001} << (2 * kSubtiles);
-    rows.trim(open, rect, 70, 100, 131, 148);
+    rows.trim(open, rect, 70, 100, j0, j1);
     EXPECT_TRUE(rows.trimmed);
+    EXPECT_EQ(j0, 131);
+    EXPECT_EQ(j1, 148);
     for (int r = 0; r <= 17; ++r) {
         const int y = 131 + r;
         const std::uint64_t expected = y < 136 ? first_bits(24) << 2 : y < 144 ? 0 : first_bits(31);
         EXPECT_EQ(rows.keep[r], expected) << "row " << y;
     }
+    rows.trim(std::uint64_t{0b100} << kSubtiles, rect, 70, 100, j0, j1);
+    EXPECT_TRUE(rows.trimmed);
+    EXPECT_EQ(j0, 136);
+    EXPECT_EQ(j1, 143);
+    for (int r = 0; r <= 7; ++r) EXPECT_EQ(rows.keep[r], first_bits(8) << 10) << "row " << 136 + r;
     // Every subtile of the box open: nothing trimmed.
-    rows.trim(~std::uint64_t{0}, rect, 70, 100, 131, 148);
+    j0 = 131;
+    j1 = 148;
+    rows.trim(~std::uint64_t{0}, rect, 70, 100, j0, j1);
     EXPECT_FALSE(rows.trimmed);
+    EXPECT_EQ(j0, 131);
+    EXPECT_EQ(j1, 148);
     for (int r = 0; r <= 17; ++r) EXPECT_EQ(rows.keep[r], first_bits(31)) << "row " << 131 + r;
 }
 
