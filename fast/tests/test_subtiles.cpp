@@ -1,7 +1,8 @@
 // Hierarchical z's subtiles (tile_buffer.h, compose.h): which subtiles of a box a plane may be in front
 // in (open_subtiles, on every SIMD target, against the test's definition at all four corners), the rows
-// they leave to test (TrimmedRows), their far depths (TileBuffer::refresh_subtiles and refresh_far), and
-// which triangles test them (fills_box).
+// they leave to test (TrimmedRows), their far depths (TileBuffer::refresh_subtiles and refresh_far, and
+// those a big triangle's covered subtiles take from its plane: cover_subtiles), and which triangles test
+// them (fills_box).
 #include "compose.h"
 
 #include <gtest/gtest.h>
@@ -221,10 +222,10 @@ TEST(Subtiles, RefreshFarFindsTheSubtilesOrStopsAtAnEmptyBand) {
     EXPECT_EQ(tile.far, kInf);
 }
 
-// Whether every depth tile holds in the subtile at bit `at` (or anywhere in it, at = -1) is at most its far
-// depth f plus stored_err when exact (what behind_tile and open_subtiles rely on), f the subtile's (or the
-// tile's); an empty sample only under +infinity. A stored double at most f proves it at once (its exact
-// depth is within stored_err of it); otherwise the exact depth, rounded to nearest, is compared.
+// Whether every depth the tile holds in the subtile at bit `at` (in the whole tile for at = -1) is, exactly,
+// at most the far depth f there plus stored_err (what behind_tile and open_subtiles rely on); an empty
+// sample only under f = +infinity. A stored double at most f proves it at once (its exact depth is within
+// stored_err of it); otherwise the exact depth, rounded to nearest, is compared.
 bool far_bounds(TileBuffer& tile, const TileRect& rect, const Context& c, std::span<const Triangle> triangles,
                 int at) {
     const double f = at < 0 ? tile.far : tile.subtile_far[at];
