@@ -119,13 +119,10 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
     bool all_inside = true;
     switch (t.p.path) {
         case Path::fixed: {
-            const std::int64_t x_lo = (std::int64_t{i0} << c.bits) + c.sx_min, x_hi = (std::int64_t{i1} << c.bits) + c.sx_max;
-            const std::int64_t y_lo = (std::int64_t{j0} << c.bits) + c.sy_min, y_hi = (std::int64_t{j1} << c.bits) + c.sy_max;
+            const FixedRect rect = samples_rect(c, i0, i1, j0, j1);
             for (const FixedEdge& f : t.fixed) {
-                const std::int64_t lowest = f.a * (f.a >= 0 ? x_lo : x_hi) + f.b * (f.b >= 0 ? y_lo : y_hi) + f.c;
-                const std::int64_t highest = f.a * (f.a >= 0 ? x_hi : x_lo) + f.b * (f.b >= 0 ? y_hi : y_lo) + f.c;
-                if (highest < 0) return TileClass::reject;
-                all_inside = all_inside && lowest >= 0;
+                if (greatest_over(f, rect) < 0) return TileClass::reject;
+                all_inside = all_inside && least_over(f, rect) >= 0;
             }
             break;
         }

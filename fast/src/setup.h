@@ -80,6 +80,24 @@ struct FixedEdge {
     std::int64_t a, b, c;  // E(X, Y) = a X + b Y + c in fixed units, tie bias included: covered iff >= 0
 };
 
+// The rectangle, in fixed units, of the samples of pixels [i0, i1] x [j0, j1] at every sample index.
+struct FixedRect {
+    std::int64_t x_lo, x_hi, y_lo, y_hi;
+};
+inline FixedRect samples_rect(const Context& c, int i0, int i1, int j0, int j1) {
+    return {(std::int64_t{i0} << c.bits) + c.sx_min, (std::int64_t{i1} << c.bits) + c.sx_max,
+            (std::int64_t{j0} << c.bits) + c.sy_min, (std::int64_t{j1} << c.bits) + c.sy_max};
+}
+
+// An integer edge's least and greatest values over a rectangle: it is linear, so they are at the corners
+// its coefficients' signs pick.
+inline std::int64_t least_over(const FixedEdge& f, const FixedRect& r) {
+    return f.a * (f.a >= 0 ? r.x_lo : r.x_hi) + f.b * (f.b >= 0 ? r.y_lo : r.y_hi) + f.c;
+}
+inline std::int64_t greatest_over(const FixedEdge& f, const FixedRect& r) {
+    return f.a * (f.a >= 0 ? r.x_hi : r.x_lo) + f.b * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
+}
+
 struct FloatEdge {
     double ax, ay, d1, d3;  // a, b - a in the mode's type (exactly representable in it)
     bool inclusive;         // owns the samples exactly on it

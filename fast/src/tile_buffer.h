@@ -240,18 +240,13 @@ inline void cover_subtiles(const Plane& p, const std::array<FixedEdge, 3>& edges
     if (bx0 > bx1 || by0 > by1) return;
     SubtileCover cover{p.z0, p.a, p.x0, p.b, p.y0, c.ox_min, c.ox_max, c.oy_min, c.oy_max, {}, {}, {},
                        ti,   tj,  bx0,  bx1, by0, by1};
-    // The samples' rectangle of subtile (bx0, by0), in fixed units.
     const int x = ti + bx0 * kSubtile, y = tj + by0 * kSubtile;
-    const std::int64_t x_lo = (std::int64_t{x} << c.bits) + c.sx_min;
-    const std::int64_t x_hi = (std::int64_t{x + kSubtile - 1} << c.bits) + c.sx_max;
-    const std::int64_t y_lo = (std::int64_t{y} << c.bits) + c.sy_min;
-    const std::int64_t y_hi = (std::int64_t{y + kSubtile - 1} << c.bits) + c.sy_max;
+    const FixedRect first = samples_rect(c, x, x + kSubtile - 1, y, y + kSubtile - 1);  // subtile (bx0, by0)'s
     const std::int64_t step = std::int64_t{kSubtile} << c.bits;
     for (int e = 0; e < 3; ++e) {
-        const FixedEdge& f = edges[e];
-        cover.lowest[e] = f.a * (f.a >= 0 ? x_lo : x_hi) + f.b * (f.b >= 0 ? y_lo : y_hi) + f.c;
-        cover.across[e] = f.a * step;
-        cover.down[e] = f.b * step;
+        cover.lowest[e] = least_over(edges[e], first);
+        cover.across[e] = edges[e].a * step;
+        cover.down[e] = edges[e].b * step;
     }
     lower_covered_subtiles(cover, tile.subtile_far);
     tile.far = std::min(tile.far, farthest(tile.subtile_far, kSubtiles * kSubtiles));
