@@ -623,13 +623,18 @@ void FarthestSubtiles(const double* z, std::ptrdiff_t stride, int width, int row
     }
 }
 
+// The first pixel column of each lane's subtile, the lanes from subtile column k of the tile whose first
+// column is ti (exact: small integers).
+template <class DF>
+HWY_INLINE hn::Vec<DF> SubtileColumns(DF d, int k, int ti) {
+    return hn::Add(hn::Mul(hn::Iota(d, double(k)), hn::Set(d, double(kSubtile))), hn::Set(d, double(ti)));
+}
+
 std::uint64_t OpenSubtiles(const SubtileTest& t, const double* far) {
     const hn::CappedTag<double, kSubtiles> d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const bool low_x = t.a >= 0, low_y = t.b >= 0;
     const auto z0 = hn::Set(d, t.z0), a = hn::Set(d, t.a), x0 = hn::Set(d, t.x0), margin = hn::Set(d, t.margin);
-    // Each lane's subtile's first column.
-    const auto column = hn::Add(hn::Mul(hn::Iota(d, 0.0), hn::Set(d, double(kSubtile))), hn::Set(d, double(t.ti)));
     const auto i0 = hn::Set(d, double(t.i0)), i1 = hn::Set(d, double(t.i1));
     const int by0 = (t.j0 - t.tj) / kSubtile, by1 = (t.j1 - t.tj) / kSubtile;
     const std::uint64_t columns = first_bits((t.i1 - t.ti) / kSubtile + 1) & ~first_bits((t.i0 - t.ti) / kSubtile);
@@ -637,7 +642,7 @@ std::uint64_t OpenSubtiles(const SubtileTest& t, const double* far) {
     std::uint64_t open = 0;
     for (int k = 0; k < kSubtiles; k += lanes) {
         // The nearest corner's x in each subtile column, within the box (exact: integers and sixteenths).
-        const auto first = hn::Add(column, hn::Set(d, double(k * kSubtile)));
+        const auto first = SubtileColumns(d, k, t.ti);
         const auto px = low_x ? hn::Add(hn::Max(first, i0), hn::Set(d, t.ox_min))
                               : hn::Add(hn::Min(hn::Add(first, hn::Set(d, double(kSubtile - 1))), i1),
                                         hn::Set(d, t.ox_max));
@@ -667,8 +672,7 @@ void LowerCoveredSubtiles(const SubtileCover& t, double* far) {
         const auto bx = hn::Add(hn::Iota(di, 0), hn::Set(di, k));  // each lane's subtile column
         const auto in_box = hn::RebindMask(d, hn::Not(hn::Or(hn::Gt(bx0, bx), hn::Gt(bx, bx1))));
         // Exact: integers and sixteenths.
-        const auto first = hn::Add(hn::ConvertTo(d, hn::Mul(bx, hn::Set(di, kSubtile))), hn::Set(d, double(t.ti)));
-        const auto px = hn::Add(first, hn::Set(d, high_x ? kSubtile - 1 + t.ox_max : t.ox_min));
+        const auto px = hn::Add(SubtileColumns(d, k, t.ti), hn::Set(d, high_x ? kSubtile - 1 + t.ox_max : t.ox_min));
         const auto a_dx = hn::Mul(a, hn::Sub(px, x0));
         // Each edge's least value in each lane's subtile of the first band; integer vectors wrap around, and
         // the lanes outside the box, which may, are masked off.
