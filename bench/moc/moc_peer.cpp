@@ -116,10 +116,23 @@ const char* impl_name(MaskedOcclusionCulling::Implementation i) {
     return "?";
 }
 
-double median(std::vector<double> v) {
+// The q-quantile of v (0 < q < 1), interpolated between neighbours.
+double quantile(std::vector<double> v, double q) {
     std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    const double at = q * static_cast<double>(v.size() - 1);
+    const auto lo = static_cast<std::size_t>(at);
+    const std::size_t hi = std::min(lo + 1, v.size() - 1);
+    return v[lo] + (at - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
+double median(const std::vector<double>& v) { return quantile(v, 0.5); }
+
+// rast's time over MOC's within each repetition: the machine's speed drifts over a run, and a ratio of
+// two times taken moments apart cancels most of that drift, where the ratio of the medians does not.
+std::vector<double> paired_ratios(const std::vector<double>& rast, const std::vector<double>& moc) {
+    std::vector<double> out;
+    for (std::size_t k = 0; k < rast.size(); ++k) out.push_back(rast[k] / moc[k]);
+    return out;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -218,6 +231,7 @@ int main(int argc, char** argv) {
         std::string name;
         std::size_t n;
         double moc, moc2, rast;
+        std::vector<double> ratios;  // paired_ratios against MOC's default build
     };
     std::vector<Row> rows;
 
@@ -250,7 +264,7 @@ int main(int argc, char** argv) {
                 }
             }
         }
-        rows.push_back({d.name, d.n, median(tm), median(tm2), median(tr)});
+        rows.push_back({d.name, d.n, median(tm), median(tm2), median(tr), paired_ratios(tr, tm)});
         std::printf("%-16s n=%-6zu (%s): MOC-%s %.3f ms, MOC-AVX2 %.3f ms, rast %.3f ms  [MOC RenderTriangles returned %s]\n",
                     d.name, d.n, d.note, auto_impl, rows.back().moc, rows.back().moc2, rows.back().rast,
                     res == MaskedOcclusionCulling::VISIBLE ? "VISIBLE" : "VIEW_CULLED/other");
@@ -309,11 +323,13 @@ int main(int argc, char** argv) {
         }
     }
 
-    std::printf("\n%-16s %7s %12s %12s %10s %12s %12s\n", "scene", "tris", std::string("MOC-").append(auto_impl).c_str(),
-                "MOC-AVX2", "rast", "rast/MOC", "rast/AVX2");
+    const std::string moc_column = std::string("MOC-").append(auto_impl);
+    std::printf("\n%-16s %7s %12s %12s %10s %12s %12s   %s\n", "scene", "tris", moc_column.c_str(), "MOC-AVX2",
+                "rast", "rast/MOC", "rast/AVX2", "rast/MOC paired: median [quartiles]");
     for (const Row& r : rows)
-        std::printf("%-16s %7zu %9.3f ms %9.3f ms %7.3f ms %11.2fx %11.2fx\n", r.name.c_str(), r.n, r.moc, r.moc2,
-                    r.rast, r.rast / r.moc, r.rast / r.moc2);
+        std::printf("%-16s %7zu %9.3f ms %9.3f ms %7.3f ms %11.2fx %11.2fx   %.2fx [%.2f-%.2fx]\n", r.name.c_str(),
+                    r.n, r.moc, r.moc2, r.rast, r.rast / r.moc, r.rast / r.moc2, median(r.ratios),
+                    quantile(r.ratios, 0.25), quantile(r.ratios, 0.75));
 
     MaskedOcclusionCulling::Destroy(moc);
     MaskedOcclusionCulling::Destroy(moc2);
