@@ -132,70 +132,6 @@ struct FixedEdges {
     hn::Vec<DI> row[3], step[3], down[3], value[3];
 };
 
-// The float edges in T = double: px is the depth test's own sample x.
-struct Float64Edges {
-    Float64Edges(const Coverage& c, const Block& b) : cov(c), block(b) {
-        for (int e = 0; e < 3; ++e) inclusive[e] = hn::FirstN(D(), c.inclusive[e] ? hn::Lanes(D()) : 0);
-    }
-    void start_row(int r) {
-        const double py = double(block.j0 + r) + block.sy;
-        for (int e = 0; e < 3; ++e) t1[e] = hn::Set(D(), cov.d1[e] * (py - cov.ay[e]));
-    }
-    MD chunk(int, VD px) {
-        const D d;
-        const auto zero = hn::Zero(d);
-        auto inside = hn::FirstN(d, hn::Lanes(d));
-        for (int e = 0; e < 3; ++e) {
-            const auto value = hn::Sub(t1[e], hn::Mul(hn::Set(d, cov.d3[e]), hn::Sub(px, hn::Set(d, cov.ax[e]))));
-            inside = hn::And(inside, hn::Or(hn::Gt(value, zero), hn::And(hn::Eq(value, zero), inclusive[e])));
-        }
-        return inside;
-    }
-    const Coverage& cov;
-    const Block& block;
-    MD inclusive[3];
-    VD t1[3];
-};
-
-// The float edges in T = float, on as many float lanes as there are double lanes.
-struct Float32Edges {
-    using DF = hn::Rebind<float, D>;
-    using DF32 = hn::RebindToSigned<DF>;
-    using MF = hn::Mask<DF>;
-    Float32Edges(const Coverage& c, const Block& b) : cov(c), block(b) {
-        const DF df;
-        for (int e = 0; e < 3; ++e) {
-            inclusive[e] = hn::FirstN(df, c.inclusive[e] ? hn::Lanes(df) : 0);
-            ax[e] = hn::Set(df, float(c.ax[e]));
-            d3[e] = hn::Set(df, float(c.d3[e]));
-        }
-        lane = hn::Iota(df, 0.0f);
-        sx = hn::Set(df, float(b.sx));
-    }
-    void start_row(int r) {
-        const float py = float(double(block.j0 + r) + block.sy);
-        for (int e = 0; e < 3; ++e) t1[e] = hn::Set(DF(), float(cov.d1[e]) * (py - float(cov.ay[e])));
-    }
-    MD chunk(int k, VD) {
-        const DF df;
-        // i converts exactly (|i| < 2^24), so px is T(i + sx) rounded once.
-        const auto px = hn::Add(hn::Add(hn::Set(df, float(block.i0 + k)), lane), sx);
-        const auto zero = hn::Zero(df);
-        auto inside = hn::FirstN(df, hn::Lanes(df));
-        for (int e = 0; e < 3; ++e) {
-            const auto value = hn::Sub(t1[e], hn::Mul(d3[e], hn::Sub(px, ax[e])));
-            inside = hn::And(inside, hn::Or(hn::Gt(value, zero), hn::And(hn::Eq(value, zero), inclusive[e])));
-        }
-        // Widen the all-ones / all-zeros lanes from 32 to 64 bits by sign extension.
-        const auto wide = hn::PromoteTo(DI(), hn::BitCast(DF32(), hn::VecFromMask(df, inside)));
-        return hn::MaskFromVec(hn::BitCast(D(), wide));
-    }
-    const Coverage& cov;
-    const Block& block;
-    MF inclusive[3];
-    hn::Vec<DF> ax[3], d3[3], t1[3], lane, sx;
-};
-
 // The loops take the evaluator and the block by value: a local whose address never escapes
 // stays in registers, where one behind a reference is reloaded and stored around every vector store (an
 // integer vector store may alias anything).
@@ -295,8 +231,8 @@ struct DepthLanes {
     hn::Vec<DId> id;
 };
 
-// A sample row meets the triangle in one run of samples: along the row each edge's value is monotone
-// (exact, or correctly rounded operations on a monotone px), so its inside is a half-line.
+// The depth test for the evaluators (All, Masks: every sample, or the wide path's spans), a row's covered
+// samples one run (a span), so the row ends at the first uncovered vector past it.
 template <bool kPerSample, class Evaluator>
 bool DepthLoop(const Block b, Evaluator ev, const DepthPlane& p, DepthRows rows, std::uint64_t* undecided) {
     const D d;
@@ -544,7 +480,7 @@ std::size_t DepthSmallRun(const SmallRunEntry* entries, std::size_t first, std::
 
 // Instantiates `loop` with the evaluator for the coverage's kind.
 template <class Loop>
-auto with_evaluator(const Block& b, const Coverage& c, Loop loop) {
+auto with_evaluator(const Coverage& c, Loop loop) {
     switch (c.kind) {
         case Coverage::Kind::masks: {
             Masks ev{c.masks};
@@ -554,37 +490,37 @@ auto with_evaluator(const Block& b, const Coverage& c, Loop loop) {
             FixedEdges ev(c);
             return loop(ev);
         }
-        case Coverage::Kind::float32: {
-            Float32Edges ev(c, b);
-            return loop(ev);
-        }
-        case Coverage::Kind::float64: {
-            Float64Edges ev(c, b);
-            return loop(ev);
-        }
+        case Coverage::Kind::float32:  // by float_row_masks
+        case Coverage::Kind::float64:
         case Coverage::Kind::all: break;
     }
     All ev;
     return loop(ev);
 }
 
-void CoverageBlock(const Block& b, const Coverage& c, std::uint64_t* covered) {
-    with_evaluator(b, c, [&](auto& ev) { CoverageLoop(b, ev, covered); });
+bool FloatKind(const Coverage& c) {
+    return c.kind == Coverage::Kind::float32 || c.kind == Coverage::Kind::float64;
 }
 
-// Integer edges go through their row masks and DepthRuns, as the fixed path's own calls (depth_runs,
-// depth_small) do, rather than a fused loop of their own that no path would run.
+void CoverageBlock(const Block& b, const Coverage& c, std::uint64_t* covered) {
+    if (FloatKind(c)) return float_row_masks(c, b, covered);
+    with_evaluator(c, [&](auto& ev) { CoverageLoop(b, ev, covered); });
+}
+
+// Edges go through their row masks and DepthRuns, as the fixed path's own calls (depth_runs,
+// depth_small) do, rather than a fused loop of their own: the integer ones walked, the float ones found by
+// bisection (float_row_masks), which tests a fraction of the samples the float evaluation did (a float32
+// edge took about 30 operations a vector, the depth test about 10).
 bool DepthBlock(const Block& b, const Coverage& c, const DepthPlane& p, const DepthRows& rows,
                 std::uint64_t* undecided) {
-    return with_evaluator(b, c, [&](auto& ev) {
-        if constexpr (std::is_same_v<std::remove_cvref_t<decltype(ev)>, FixedEdges>) {
-            std::uint64_t covered[kRowLanes];
-            CoverageLoop(b, ev, covered);
-            return DepthRuns(b, covered, p, rows, undecided);
-        } else {
-            return with_stored_bounds(
-                rows, [&](auto per_sample) { return DepthLoop<per_sample>(b, ev, p, rows, undecided); });
-        }
+    if (c.kind == Coverage::Kind::fixed || FloatKind(c)) {
+        std::uint64_t covered[kRowLanes];
+        CoverageBlock(b, c, covered);
+        return DepthRuns(b, covered, p, rows, undecided);
+    }
+    return with_evaluator(c, [&](auto& ev) {
+        return with_stored_bounds(
+            rows, [&](auto per_sample) { return DepthLoop<per_sample>(b, ev, p, rows, undecided); });
     });
 }
 
