@@ -12,6 +12,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 HWY_BEFORE_NAMESPACE();
 namespace rast::fast::detail::HWY_NAMESPACE {
@@ -44,6 +45,26 @@ void FloatRows(const Coverage& c, const Block& b, std::uint64_t* masks) {
         ay[e] = T(c.ay[e]);
         d1[e] = T(c.d1[e]);
         d3[e] = T(c.d3[e]);
+    }
+    // A block one vector wide (a small triangle's) is evaluated at every sample, columns in lanes: over so
+    // few samples the searches' fixed costs are more than the evaluation.
+    if (b.width <= lanes) {
+        const V px = hn::Add(hn::Add(i0, hn::Iota(d, T(0))), sx);
+        for (int r = 0; r < b.rows; ++r) {
+            const T py = T(double(b.j0 + r) + b.sy);
+            auto covered = hn::FirstN(d, static_cast<std::size_t>(b.width));
+            for (int e = 0; e < 3; ++e) {
+                const V t1 = hn::Set(d, d1[e] * (py - ay[e]));
+                const V value = hn::Sub(t1, hn::Mul(hn::Set(d, d3[e]), hn::Sub(px, hn::Set(d, ax[e]))));
+                auto inside = hn::Gt(value, zero);
+                if (c.inclusive[e]) inside = hn::Or(inside, hn::Eq(value, zero));
+                covered = hn::And(covered, inside);
+            }
+            std::uint8_t bytes[8] = {};
+            hn::StoreMaskBits(d, covered, bytes);
+            std::memcpy(&masks[r], bytes, 8);
+        }
+        return;
     }
     const auto covered_at = [&](int e, int r, int k) {
         const T px = T(b.i0) + T(k) + T(b.sx), py = T(double(b.j0 + r) + b.sy);
