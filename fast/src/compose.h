@@ -222,8 +222,7 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
                           : depth_block(b, cov, plane, rows, undecided);
         },
         subtiles ? &trim : nullptr);
-    if (composed && subtiles && t.p.path == Path::fixed)
-        cover_subtiles(t.plane, t.fixed, c, tile, rect.i0, rect.j0, i0, i1, j0, j1);
+    if (composed && subtiles) cover_subtiles(t, c, tile, rect.i0, rect.j0, i0, i1, j0, j1);
 }
 
 // A small triangle's binned record: its box within the tile.

@@ -608,12 +608,18 @@ void LowerCoveredSubtiles(const SubtileCover& t, double* far) {
         const auto bx = hn::Add(hn::Iota(di, 0), hn::Set(di, k));  // each lane's subtile column
         const auto in_box = hn::RebindMask(d, hn::Not(hn::Or(hn::Gt(bx0, bx), hn::Gt(bx, bx1))));
         // Exact: integers and sixteenths.
-        const auto px = hn::Add(SubtileColumns(d, k, t.ti), hn::Set(d, high_x ? kSubtile - 1 + t.ox_max : t.ox_min));
+        const auto column = SubtileColumns(d, k, t.ti);
+        const auto px = hn::Add(column, hn::Set(d, high_x ? kSubtile - 1 + t.ox_max : t.ox_min));
         const auto a_dx = hn::Mul(a, hn::Sub(px, x0));
-        // Each edge's least value in each lane's subtile of the first band; integer vectors wrap around, and
-        // the lanes outside the box, which may, are masked off.
+        // Integer edges: each edge's least value in each lane's subtile of the first band; integer vectors
+        // wrap around, and the lanes outside the box, which may, are masked off. Float edges: the column
+        // term d3 (x - ax) of each edge's double value at the corner of the subtile's samples where it is least.
         hn::Vec<decltype(di)> edge[3], down[3];
+        hn::Vec<decltype(d)> column_term[3];
         for (int e = 0; e < 3; ++e) {
+            const auto x = t.d3[e] >= 0 ? hn::Add(hn::Add(column, hn::Set(d, kSubtile - 1.0)), hn::Set(d, t.ox_max))
+                                        : hn::Add(column, hn::Set(d, t.ox_min));
+            column_term[e] = hn::Mul(hn::Set(d, t.d3[e]), hn::Sub(x, hn::Set(d, t.ax[e])));
             edge[e] = hn::Add(hn::Set(di, t.lowest[e]), hn::Mul(hn::Sub(bx, bx0), hn::Set(di, t.across[e])));
             down[e] = hn::Set(di, t.down[e]);
         }
@@ -621,12 +627,23 @@ void LowerCoveredSubtiles(const SubtileCover& t, double* far) {
             const double row = t.tj + by * kSubtile;
             const double py = high_y ? row + (kSubtile - 1 + t.oy_max) : row + t.oy_min;
             const auto farthest = hn::Add(z0, hn::Add(a_dx, hn::Set(d, t.b * (py - t.y0))));
-            // All three are >= 0 exactly when their bitwise or is > -1.
-            const auto inside = hn::RebindMask(d, hn::Gt(hn::Or(hn::Or(edge[0], edge[1]), edge[2]), hn::Set(di, -1)));
+            auto inside = hn::FirstN(d, hn::Lanes(d));
+            if (t.floating) {
+                // The whole-tile test's (classify, coverage.h) on the subtile: its operations, its margin.
+                const double y_lo = row + t.oy_min, y_hi = (row + (kSubtile - 1)) + t.oy_max;
+                for (int e = 0; e < 3; ++e) {
+                    const double row_term = t.d1[e] * ((t.d1[e] >= 0 ? y_lo : y_hi) - t.ay[e]);
+                    const auto lowest = hn::Sub(hn::Set(d, row_term), column_term[e]);
+                    inside = hn::And(inside, hn::Gt(lowest, hn::Set(d, t.margin)));
+                }
+            } else {
+                // All three are >= 0 exactly when their bitwise or is > -1.
+                inside = hn::RebindMask(d, hn::Gt(hn::Or(hn::Or(edge[0], edge[1]), edge[2]), hn::Set(di, -1)));
+                for (int e = 0; e < 3; ++e) edge[e] = hn::Add(edge[e], down[e]);
+            }
             double* at = far + by * kSubtiles + k;
             const auto old = hn::LoadU(d, at);
             hn::StoreU(hn::IfThenElse(hn::And(inside, in_box), hn::Min(old, farthest), old), d, at);
-            for (int e = 0; e < 3; ++e) edge[e] = hn::Add(edge[e], down[e]);
         }
     }
 }

@@ -170,18 +170,24 @@ struct SubtileTest {
 std::uint64_t open_subtiles(const SubtileTest& t, const double* far);
 
 // A big triangle just composed into a tile, against the far depths of the subtiles in [bx0, bx1] x
-// [by0, by1] (whole ones, counted from the tile's pixel (ti, tj)): its plane as in SubtileTest and, for
-// each of its integer edges, the least value over the samples of subtile (bx0, by0) and its steps from
-// one subtile to the next across and down (exact: the edge is linear, least at the corner its signs pick).
+// [by0, by1] (whole ones, counted from the tile's pixel (ti, tj)): its plane as in SubtileTest and its
+// edges. Integer edges: for each, the least value over the samples of subtile (bx0, by0) and its steps
+// from one subtile to the next across and down (exact: the edge is linear, least at the corner its signs
+// pick). Float edges (floating): each edge's start (ax, ay) and d1 = bx - ax, d3 = by - ay in doubles, and
+// the float modes' whole-tile margin (float_margin, setup.h).
 struct SubtileCover {
     double z0, a, x0, b, y0;
     double ox_min, ox_max, oy_min, oy_max;
-    std::int64_t lowest[3], across[3], down[3];
+    std::int64_t lowest[3]{}, across[3]{}, down[3]{};
+    bool floating = false;
+    double ax[3]{}, ay[3]{}, d1[3]{}, d3[3]{}, margin = 0;
     int ti, tj, bx0, bx1, by0, by1;
 };
 
 // far[kSubtiles by + bx] lowered to the plane's value at the farthest corner of the samples' rectangle of
-// subtile (bx, by) for every subtile whose samples all lie inside the three edges (all edge values >= 0):
+// subtile (bx, by) for every subtile whose samples all lie inside the three edges (integer edges: all
+// edge values >= 0; float edges: each one's double value at the corner where it is least beyond the margin,
+// the test by which classify accepts a whole tile):
 // its far depth found without reading the tile, once the triangle is composed (cover_subtiles,
 // tile_buffer.h, says why it bounds the subtile). Triangles composed nearest first left the far depths
 // found every few of them a quarter more samples to test (the MOC peer's large scene).

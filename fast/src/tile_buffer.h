@@ -225,28 +225,46 @@ inline std::uint64_t in_front_subtiles(const Plane& p, const Context& c, const T
     return open_subtiles(test, tile.subtile_far);
 }
 
-// After a big triangle with integer edges was composed into the tile whose corner is pixel (ti, tj), over
-// pixels [i0, i1] x [j0, j1] of its box: the whole subtiles there whose samples it all covers take their far
-// depth from its plane (lower_covered_subtiles), and the tile's far depth the largest of its subtiles'.
+// After big triangle t (the fixed path's or the float modes' with a whole-tile margin) was composed into
+// the tile whose corner is pixel (ti, tj), over pixels [i0, i1] x [j0, j1] of its box: the whole subtiles
+// there whose samples it all covers take their far depth from its plane (lower_covered_subtiles), and the
+// tile's far depth the largest of its subtiles'.
 // A far depth f must keep every exact depth stored under it at most f + stored_err (behind_tile). At
 // each such sample the (z, id) order left a depth no farther than the plane's exact one, which is within
 // err of its double one, and the tile admitted err (stored_err >= err); rounding is monotone, so the
 // double depths are largest at the corner the slopes pick (as open_subtiles' nearest): that is f.
-inline void cover_subtiles(const Plane& p, const std::array<FixedEdge, 3>& edges, const Context& c, TileBuffer& tile,
-                           int ti, int tj, int i0, int i1, int j0, int j1) {
-    if (!(p.err < std::numeric_limits<double>::infinity())) return;
+inline void cover_subtiles(const Setup& t, const Context& c, TileBuffer& tile, int ti, int tj, int i0, int i1, int j0,
+                           int j1) {
+    const Plane& p = t.plane;
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    const bool floating = t.p.path == Path::floating;
+    if (!(p.err < kInfinity) || (floating && !(t.float_margin < kInfinity)) || t.p.path == Path::wide) return;
     const int bx0 = (i0 - ti + kSubtile - 1) / kSubtile, bx1 = (i1 - ti + 1) / kSubtile - 1;
     const int by0 = (j0 - tj + kSubtile - 1) / kSubtile, by1 = (j1 - tj + 1) / kSubtile - 1;
     if (bx0 > bx1 || by0 > by1) return;
-    SubtileCover cover{p.z0, p.a, p.x0, p.b, p.y0, c.ox_min, c.ox_max, c.oy_min, c.oy_max, {}, {}, {},
-                       ti,   tj,  bx0,  bx1, by0, by1};
-    const int x = ti + bx0 * kSubtile, y = tj + by0 * kSubtile;
-    const FixedRect first = samples_rect(c, x, x + kSubtile - 1, y, y + kSubtile - 1);  // subtile (bx0, by0)'s
-    const std::int64_t step = std::int64_t{kSubtile} << c.bits;
-    for (int e = 0; e < 3; ++e) {
-        cover.lowest[e] = least_over(edges[e], first);
-        cover.across[e] = edges[e].a * step;
-        cover.down[e] = edges[e].b * step;
+    SubtileCover cover{.z0 = p.z0, .a = p.a, .x0 = p.x0, .b = p.b, .y0 = p.y0,
+                       .ox_min = c.ox_min, .ox_max = c.ox_max, .oy_min = c.oy_min, .oy_max = c.oy_max,
+                       .floating = floating, .ti = ti, .tj = tj, .bx0 = bx0, .bx1 = bx1, .by0 = by0, .by1 = by1};
+    if (floating) {
+        // As classify takes them.
+        for (int e = 0; e < 3; ++e) {
+            const Vertex& a = t.p.v[static_cast<std::size_t>(e)];
+            const Vertex& b = t.p.v[static_cast<std::size_t>((e + 1) % 3)];
+            cover.ax[e] = a.x;
+            cover.ay[e] = a.y;
+            cover.d1[e] = b.x - a.x;
+            cover.d3[e] = b.y - a.y;
+        }
+        cover.margin = t.float_margin;
+    } else {
+        const int x = ti + bx0 * kSubtile, y = tj + by0 * kSubtile;
+        const FixedRect first = samples_rect(c, x, x + kSubtile - 1, y, y + kSubtile - 1);  // subtile (bx0, by0)'s
+        const std::int64_t step = std::int64_t{kSubtile} << c.bits;
+        for (int e = 0; e < 3; ++e) {
+            cover.lowest[e] = least_over(t.fixed[static_cast<std::size_t>(e)], first);
+            cover.across[e] = t.fixed[static_cast<std::size_t>(e)].a * step;
+            cover.down[e] = t.fixed[static_cast<std::size_t>(e)].b * step;
+        }
     }
     lower_covered_subtiles(cover, tile.subtile_far);
     tile.far = std::min(tile.far, farthest(tile.subtile_far, kSubtiles * kSubtiles));

@@ -248,65 +248,83 @@ bool far_bounds(TileBuffer& tile, const TileRect& rect, const Context& c, std::s
 }
 
 // Big triangles composed one by one into the tile at (64, 64) of a 128 x 128 viewport, 1 and 4 samples,
-// fixed8: a random background and random triangles of either slope, and copies of the one before with
-// its corners turned (the same exact plane, a double plane of its own, ties to the lower id): after each,
-// the far depths the covered subtiles took from the plane (without a refresh of the tile) bound what
-// their subtiles hold, and so does the tile's. Most triangles cover some subtile whole.
+// fixed8 (integer edges) and the float modes (the whole-tile margin): a random background, random
+// triangles of either slope, right triangles whose legs run along a subtile's pixel centres, and copies
+// of the one before with its corners turned (the same exact plane, a double plane of its own, ties to the
+// lower id): after each, the far depths the covered subtiles took from the plane (without a refresh of
+// the tile) bound what their subtiles hold, and so does the tile's. Most triangles cover some subtile
+// whole.
 TEST(Subtiles, CoveredSubtilesFarDepthsBoundWhatTheyHoldOnEveryTarget) {
+    const Precision precisions[] = {Precision::fixed8, Precision::float32, Precision::float64};
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
-        long lowered = 0, checked = 0;
-        for (const int samples : {1, 4}) {
-            const Context c = make_context<Fault::none>({128, 128}, samples, Precision::fixed8);
-            const TileRect rect{64, 127, 64, 127};
-            std::mt19937_64 rng(20261128 + static_cast<std::uint64_t>(samples));
-            std::uniform_real_distribution<double> unit(0, 1);
-            for (int scene = 0; scene < 8; ++scene) {
-                std::vector<Triangle> triangles;
-                const double back = 0.9 + 0.05 * unit(rng);
-                triangles.push_back(Triangle{{{{-200, -200, back}, {400, -200, back}, {-200, 400, back + 0.01}}}});
-                while (triangles.size() < 24) {
-                    if (triangles.size() > 1 && rng() % 3 == 0) {
-                        const auto& v = triangles.back().v;
-                        triangles.push_back(Triangle{{v[1], v[2], v[0]}});
-                        continue;
+        for (const Precision precision : precisions) {
+            hwy::SetSupportedTargetsForTest(target);
+            SCOPED_TRACE(hwy::TargetName(target));
+            SCOPED_TRACE(static_cast<int>(precision));
+            long lowered = 0, checked = 0;
+            for (const int samples : {1, 4}) {
+                const Context c = make_context<Fault::none>({128, 128}, samples, precision);
+                const TileRect rect{64, 127, 64, 127};
+                std::mt19937_64 rng(20261128 + static_cast<std::uint64_t>(samples));
+                std::uniform_real_distribution<double> unit(0, 1);
+                for (int scene = 0; scene < 8; ++scene) {
+                    std::vector<Triangle> triangles;
+                    const double back = 0.9 + 0.05 * unit(rng);
+                    triangles.push_back(Triangle{{{{-200, -200, back}, {400, -200, back}, {-200, 400, back + 0.01}}}});
+                    while (triangles.size() < 24) {
+                        if (triangles.size() > 1 && rng() % 3 == 0) {
+                            const auto& v = triangles.back().v;
+                            triangles.push_back(Triangle{{v[1], v[2], v[0]}});
+                            continue;
+                        }
+                        if (rng() % 4 == 0) {
+                            // Legs along a subtile's first or last column and row of pixel centres: its samples
+                            // there lie on the edges, covered by the tie rule on one side only.
+                            const auto centre = [&] {
+                                return 64 + 8 * static_cast<double>(rng() % 8) + (rng() % 2 ? 7.5 : 0.5);
+                            };
+                            const double x = centre(), y = centre();
+                            const double dx = rng() % 2 ? 90 : -90, dy = rng() % 2 ? 90 : -90;
+                            const double z = 0.1 + 0.8 * unit(rng);
+                            triangles.push_back(Triangle{{{{x, y, z}, {x + dx, y, z + 0.01}, {x, y + dy, z + 0.02}}}});
+                            continue;
+                        }
+                        const double cx = 64 + 64 * unit(rng), cy = 64 + 64 * unit(rng), r = 70 + 80 * unit(rng);
+                        const double turn = 6.283185307179586 * unit(rng);
+                        Triangle t;
+                        for (int k = 0; k < 3; ++k) {
+                            const double angle = turn + k * 2.0943951023931953;
+                            t.v[static_cast<std::size_t>(k)] = {cx + r * std::cos(angle), cy + r * std::sin(angle),
+                                                                0.1 + 0.8 * unit(rng)};
+                        }
+                        triangles.push_back(t);
                     }
-                    const double cx = 64 + 64 * unit(rng), cy = 64 + 64 * unit(rng), r = 70 + 80 * unit(rng);
-                    const double turn = 6.283185307179586 * unit(rng);
-                    Triangle t;
-                    for (int k = 0; k < 3; ++k) {
-                        const double angle = turn + k * 2.0943951023931953;
-                        t.v[static_cast<std::size_t>(k)] = {cx + r * std::cos(angle), cy + r * std::sin(angle),
-                                                            0.1 + 0.8 * unit(rng)};
+                    const SceneView view{triangles, c};
+                    TileBuffer tile;
+                    tile.fit(1, samples, c.vp);
+                    tile.clear();
+                    for (std::size_t id = 0; id < triangles.size(); ++id) {
+                        const std::optional<Placed> p = place<Fault::none>(triangles[id], c);
+                        ASSERT_TRUE(p && p->path == (precision == Precision::fixed8 ? Path::fixed : Path::floating));
+                        const detail::Setup t = setup_triangle<Fault::none>(*p, c, true);
+                        double before[kSubtiles * kSubtiles];
+                        std::copy(std::begin(tile.subtile_far), std::end(tile.subtile_far), before);
+                        const std::size_t since = tile.since_far;
+                        rasterize<Fault::none>(t, static_cast<std::int32_t>(id), rect, tile, view);
+                        ASSERT_TRUE(far_bounds(tile, rect, c, triangles, -1)) << "triangle " << id;
+                        if (tile.since_far <= since || tile.subtiles_due) continue;  // refreshed: read from the tile
+                        for (int at = 0; at < kSubtiles * kSubtiles; ++at) {
+                            if (!(tile.subtile_far[at] < before[at])) continue;
+                            ++lowered;
+                            ASSERT_TRUE(far_bounds(tile, rect, c, triangles, at)) << "triangle " << id << ", " << at;
+                        }
+                        ++checked;
                     }
-                    triangles.push_back(t);
-                }
-                const SceneView view{triangles, c};
-                TileBuffer tile;
-                tile.fit(1, samples, c.vp);
-                tile.clear();
-                for (std::size_t id = 0; id < triangles.size(); ++id) {
-                    const std::optional<Placed> p = place<Fault::none>(triangles[id], c);
-                    ASSERT_TRUE(p && p->path == Path::fixed);
-                    const detail::Setup t = setup_triangle<Fault::none>(*p, c, true);
-                    double before[kSubtiles * kSubtiles];
-                    std::copy(std::begin(tile.subtile_far), std::end(tile.subtile_far), before);
-                    const std::size_t since = tile.since_far;
-                    rasterize<Fault::none>(t, static_cast<std::int32_t>(id), rect, tile, view);
-                    ASSERT_TRUE(far_bounds(tile, rect, c, triangles, -1)) << "triangle " << id;
-                    if (tile.since_far <= since || tile.subtiles_due) continue;  // refreshed: read from the tile
-                    for (int at = 0; at < kSubtiles * kSubtiles; ++at) {
-                        if (!(tile.subtile_far[at] < before[at])) continue;
-                        ++lowered;
-                        ASSERT_TRUE(far_bounds(tile, rect, c, triangles, at)) << "triangle " << id << ", " << at;
-                    }
-                    ++checked;
                 }
             }
+            EXPECT_GT(checked, 100);
+            EXPECT_GT(lowered, 2000);
         }
-        EXPECT_GT(checked, 100);
-        EXPECT_GT(lowered, 2000);
     }
     hwy::SetSupportedTargetsForTest(0);
 }
