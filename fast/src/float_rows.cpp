@@ -1,5 +1,5 @@
-// The float modes' covered samples of a block, row by row, by a binary search per edge rather than an
-// evaluation at every sample. Highway compiles this file once per SIMD target (foreach_target) and
+// The float modes' covered samples of a block, row by row, each edge's crossing found by a search rather
+// than an evaluation at every sample. Highway compiles this file once per SIMD target (foreach_target) and
 // dispatches to the best one the CPU supports at run time.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "float_rows.cpp"
@@ -22,14 +22,16 @@ namespace hn = hwy::HWY_NAMESPACE;
 // monotone in the column, every operation being correctly rounded on a monotone px (an infinity or NaN
 // product is constant along the row or, for an infinite d3, changes once, at px = ax, where E is NaN and
 // the sample not covered), so the columns an edge covers are the first n of the block where d3 > 0, the
-// last width - n where d3 < 0, all or none where d3 = 0. n is found by bisection in bit_width(width)
-// steps, each evaluating E exactly as the definition does: px = T(T(i0 + column) + sx), its integer part
-// exact (|i| < 2^24 in float), one rounding added. A row's run is the three ranges' intersection.
+// last width - n where d3 < 0, all or none where d3 = 0. n is estimated from the exact line and confirmed,
+// or else found by bisection in bit_width(width) steps, each evaluating E exactly as the definition does:
+// px = T(T(i0 + column) + sx), its integer part exact (|i| < 2^24 in float), one rounding added. A row's
+// run is the three ranges' intersection.
 //
-// With d1 and d3 finite, E is monotone down the columns too (t1 = d1 (py - ay) is never NaN then, and where
-// t1 - d3 (px - ax) is, no sample of that column is covered), so an edge covers the whole block if it covers
-// the corner where E is least, and none of it if not the corner where E is greatest: most edges of a
-// partial tile need no search (a big triangle's tile usually meets one of its edges).
+// With d1 and d3 finite, E is monotone from row to row too (t1 = d1 (py - ay) is never NaN then; E is NaN
+// only where t1 and d3 (px - ax) are infinities of one sign, at the end of its column where E's order puts
+// an uncovered sample), so an edge covers the whole block if it covers the corner where E is least, and
+// none of it if not the corner where E is greatest: most edges of a partial tile need no search (a big
+// triangle's tile usually meets one of its edges).
 template <class T>
 void FloatRows(const Coverage& c, const Block& b, std::uint64_t* masks) {
     const hn::ScalableTag<T> d;

@@ -36,7 +36,8 @@ void random_edge(std::mt19937_64& rng, const Block& b, bool single, Coverage& c,
     std::uniform_real_distribution<double> unit(-1, 1);
     const double px = b.i0 + column(rng) + b.sx, py = b.j0 + row(rng) + b.sy;
     const int s = shape(rng);
-    const double scale = s == 0 ? 1e30 : s == 1 ? 1e300 : s == 2 ? 1e-40 : 64;
+    const double overflow = single ? 3e37 : 5e306;  // finite, but times a few rows' y - ay beyond the type
+    const double scale = s == 0 ? 1e30 : s == 1 ? 1e300 : s == 2 ? 1e-40 : s == 8 ? overflow : 64;
     double dx = unit(rng) * scale, dy = unit(rng) * scale;
     if (s == 3) dy = 0;
     if (s == 4) dx = 0;
