@@ -93,7 +93,7 @@ struct RowEdges {
 void row_masks(const RowEdges& edges, int width, int rows, std::uint64_t* masks);
 
 // masks[r]: the columns of row r that float edges (Coverage::Kind::float32 or float64) cover, each edge's
-// by bisection along the row, where it is monotone; masks must hold kRowLanes entries.
+// crossing found by a search along the row, where it is monotone; masks must hold kRowLanes entries.
 void float_row_masks(const Coverage& coverage, const Block& block, std::uint64_t* masks);
 
 // covered[r]: the covered samples of row r.

@@ -1,4 +1,4 @@
-// float_row_masks, the float modes' rows of covered samples found by bisection, against the float edges
+// float_row_masks, the float modes' rows of covered samples found by search, against the float edges
 // evaluated at every sample (float_row_coverage, the scalar depth test's own), on each SIMD target: edges
 // through samples (E = 0 on either tie rule), parallel to the rows or columns, coordinates where float32
 // rounds x to fewer distinct values than there are columns, and magnitudes whose products overflow.
@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <random>
 
 namespace rast::fast::detail {
