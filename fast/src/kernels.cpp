@@ -607,30 +607,28 @@ void LowerCoveredSubtiles(const SubtileCover& t, double* far) {
     for (int k = t.bx0 / lanes * lanes; k <= t.bx1; k += lanes) {
         const auto bx = hn::Add(hn::Iota(di, 0), hn::Set(di, k));  // each lane's subtile column
         const auto in_box = hn::RebindMask(d, hn::Not(hn::Or(hn::Gt(bx0, bx), hn::Gt(bx, bx1))));
-        // Exact: integers and sixteenths.
+        // The x range of each lane's subtile's samples (exact: integers and sixteenths).
         const auto column = SubtileColumns(d, k, t.ti);
-        const auto px = hn::Add(column, hn::Set(d, high_x ? kSubtile - 1 + t.ox_max : t.ox_min));
-        const auto a_dx = hn::Mul(a, hn::Sub(px, x0));
+        const auto x_lo = hn::Add(column, hn::Set(d, t.ox_min));
+        const auto x_hi = hn::Add(hn::Add(column, hn::Set(d, kSubtile - 1.0)), hn::Set(d, t.ox_max));
+        const auto a_dx = hn::Mul(a, hn::Sub(high_x ? x_hi : x_lo, x0));
         // Integer edges: each edge's least value in each lane's subtile of the first band; integer vectors
         // wrap around, and the lanes outside the box, which may, are masked off. Float edges: the column
         // term d3 (x - ax) of each edge's double value at the corner of the subtile's samples where it is least.
         hn::Vec<decltype(di)> edge[3], down[3];
         hn::Vec<decltype(d)> column_term[3];
         for (int e = 0; e < 3; ++e) {
-            const auto x = t.d3[e] >= 0 ? hn::Add(hn::Add(column, hn::Set(d, kSubtile - 1.0)), hn::Set(d, t.ox_max))
-                                        : hn::Add(column, hn::Set(d, t.ox_min));
-            column_term[e] = hn::Mul(hn::Set(d, t.d3[e]), hn::Sub(x, hn::Set(d, t.ax[e])));
+            column_term[e] = hn::Mul(hn::Set(d, t.d3[e]), hn::Sub(t.d3[e] >= 0 ? x_hi : x_lo, hn::Set(d, t.ax[e])));
             edge[e] = hn::Add(hn::Set(di, t.lowest[e]), hn::Mul(hn::Sub(bx, bx0), hn::Set(di, t.across[e])));
             down[e] = hn::Set(di, t.down[e]);
         }
         for (int by = t.by0; by <= t.by1; ++by) {
             const double row = t.tj + by * kSubtile;
-            const double py = high_y ? row + (kSubtile - 1 + t.oy_max) : row + t.oy_min;
-            const auto farthest = hn::Add(z0, hn::Add(a_dx, hn::Set(d, t.b * (py - t.y0))));
+            const double y_lo = row + t.oy_min, y_hi = (row + (kSubtile - 1)) + t.oy_max;  // exact, as x
+            const auto farthest = hn::Add(z0, hn::Add(a_dx, hn::Set(d, t.b * ((high_y ? y_hi : y_lo) - t.y0))));
             auto inside = hn::FirstN(d, hn::Lanes(d));
             if (t.floating) {
                 // The whole-tile test's (classify, coverage.h) on the subtile: its operations, its margin.
-                const double y_lo = row + t.oy_min, y_hi = (row + (kSubtile - 1)) + t.oy_max;
                 for (int e = 0; e < 3; ++e) {
                     const double row_term = t.d1[e] * ((t.d1[e] >= 0 ? y_lo : y_hi) - t.ay[e]);
                     const auto lowest = hn::Sub(hn::Set(d, row_term), column_term[e]);
