@@ -130,12 +130,9 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
             if (!(t.float_margin < std::numeric_limits<double>::infinity())) return TileClass::partial;
             const double x_lo = i0 + c.ox_min, x_hi = i1 + c.ox_max, y_lo = j0 + c.oy_min, y_hi = j1 + c.oy_max;
             for (int k = 0; k < 3; ++k) {
-                const Vertex& a = t.p.v[k];
-                const Vertex& b = t.p.v[(k + 1) % 3];
-                // E(p) = d1 (py - ay) - d3 (px - ax); a difference of doubles has the exact one's sign.
-                const double d1 = b.x - a.x, d3 = b.y - a.y;
-                const double lowest = d1 * ((d1 >= 0 ? y_lo : y_hi) - a.y) - d3 * ((d3 >= 0 ? x_hi : x_lo) - a.x);
-                const double highest = d1 * ((d1 >= 0 ? y_hi : y_lo) - a.y) - d3 * ((d3 >= 0 ? x_lo : x_hi) - a.x);
+                const auto [ax, ay, d1, d3] = double_edge(t.p.v, k);
+                const double lowest = d1 * ((d1 >= 0 ? y_lo : y_hi) - ay) - d3 * ((d3 >= 0 ? x_hi : x_lo) - ax);
+                const double highest = d1 * ((d1 >= 0 ? y_hi : y_lo) - ay) - d3 * ((d3 >= 0 ? x_lo : x_hi) - ax);
                 if (highest < -t.float_margin) return TileClass::reject;
                 all_inside = all_inside && lowest > t.float_margin;
             }

@@ -98,6 +98,18 @@ inline std::int64_t greatest_over(const FixedEdge& f, const FixedRect& r) {
     return f.a * (f.a >= 0 ? r.x_hi : r.x_lo) + f.b * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
 }
 
+// Edge k of corners v, from v[k] to v[k + 1], in doubles: E(p) = d1 (py - ay) - d3 (px - ax), d1 and d3
+// the corners' differences rounded (each has the exact one's sign), as the float modes' whole-tile test
+// takes it.
+struct DoubleEdge {
+    double ax, ay, d1, d3;
+};
+inline DoubleEdge double_edge(const Corners& v, int k) {
+    const Vertex& a = v[static_cast<std::size_t>(k)];
+    const Vertex& b = v[static_cast<std::size_t>((k + 1) % 3)];
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
 struct FloatEdge {
     double ax, ay, d1, d3;  // a, b - a in the mode's type (exactly representable in it)
     bool inclusive;         // owns the samples exactly on it

@@ -246,14 +246,12 @@ inline void cover_subtiles(const Setup& t, const Context& c, TileBuffer& tile, i
                        .ox_min = c.ox_min, .ox_max = c.ox_max, .oy_min = c.oy_min, .oy_max = c.oy_max,
                        .floating = floating, .ti = ti, .tj = tj, .bx0 = bx0, .bx1 = bx1, .by0 = by0, .by1 = by1};
     if (floating) {
-        // As classify takes them.
         for (int e = 0; e < 3; ++e) {
-            const Vertex& a = t.p.v[static_cast<std::size_t>(e)];
-            const Vertex& b = t.p.v[static_cast<std::size_t>((e + 1) % 3)];
-            cover.ax[e] = a.x;
-            cover.ay[e] = a.y;
-            cover.d1[e] = b.x - a.x;
-            cover.d3[e] = b.y - a.y;
+            const DoubleEdge edge = double_edge(t.p.v, e);  // as classify takes it
+            cover.ax[e] = edge.ax;
+            cover.ay[e] = edge.ay;
+            cover.d1[e] = edge.d1;
+            cover.d3[e] = edge.d3;
         }
         cover.margin = t.float_margin;
     } else {
