@@ -167,14 +167,19 @@ template <Fault F, class CornersOf, class BlockDepth>
     return true;
 }
 
-// The z-buffer test of block b for integer edges (edges, their steps) straight from a fixed setup,
+// The z-buffer test of block b for integer edges at its first sample and their steps (fixed_edges_at's),
 // without a Coverage.
+inline bool integer_block_depth(const RowEdges& edges, const Block& b, const DepthPlane& plane, const DepthRows& rows,
+                                std::uint64_t* undecided) {
+    return depth_rows_scalar(
+        b, [&](int r) { return fixed_row_coverage(edges.q, edges.p, edges.step, b.width, r); }, plane, rows,
+        undecided);
+}
 inline bool fixed_block_depth(const std::array<FixedEdge, 3>& edges, const Context& c, const Block& b, int s,
                               const DepthPlane& plane, const DepthRows& rows, std::uint64_t* undecided) {
-    std::int64_t e[3], dx[3], dy[3];
-    fixed_edges_at(edges, c, b, s, e, dx, dy);
-    return depth_rows_scalar(b, [&](int r) { return fixed_row_coverage(e, dx, dy, b.width, r); }, plane, rows,
-                             undecided);
+    RowEdges at;
+    fixed_edges_at(edges, c, b, s, at.q, at.p, at.step);
+    return integer_block_depth(at, b, plane, rows, undecided);
 }
 
 // A big triangle's box in a tile is tested subtile by subtile from this many pixels on: the test and the
@@ -204,13 +209,14 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
             __attribute__((always_inline)) {
             const bool scalar = b.width * b.rows <= kScalarSamples;
             const bool partial = cls == TileClass::partial;
-            if (partial && t.p.path == Path::wide && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
-            if (partial && t.p.path == Path::fixed && scalar)
-                return fixed_block_depth(t.fixed, c, b, s, plane, rows, undecided);
+            RowEdges edges;
+            const bool integer = partial && integer_edges_at(t, c, b, s, edges.q, edges.p, edges.step);
+            if (integer && scalar) return integer_block_depth(edges, b, plane, rows, undecided);
+            if (partial && t.p.path == Path::wide && !integer && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
             if (partial && t.p.path != Path::floating && !scalar) {
-                // Exact rows, one run each: the fixed path's walked from row to row, the wide path's from
-                // its spans; each trimmed to its subtiles (still one run).
-                if (t.p.path == Path::fixed) fixed_row_masks(t.fixed, c, b, s, masks);
+                // Exact rows, one run each: walked from row to row from integer edges, or the wide path's
+                // spans where it has none; each trimmed to its subtiles (still one run).
+                if (integer) row_masks(edges, b.width, b.rows, masks);
                 else coverage_of<F>(t, c, b, s, wide, masks);
                 if (trim.trimmed)
                     for (int r = 0; r < b.rows; ++r) masks[r] &= trim.keep[r];

@@ -50,6 +50,30 @@ inline void fixed_edges_at(const std::array<FixedEdge, 3>& edges, const Context&
     }
 }
 
+// The wide path's edges at block b's first sample (index s) and their steps, as fixed_edges_at gives the
+// fixed path's: exact in 128 bits, then clamped.
+inline void wide_edges_at(const std::array<WideEdge, 3>& edges, const Context& c, const Block& b, int s,
+                          std::int64_t* e, std::int64_t* dx, std::int64_t* dy) {
+    const Int128 x = (Int128{b.i0} << c.bits) + c.sx[s];
+    const Int128 y = (Int128{b.j0} << c.bits) + c.sy[s];
+    for (int k = 0; k < 3; ++k) {
+        const WideEdge& f = edges[k];
+        e[k] = clamped(f.a * x + f.b * y + f.c);
+        dx[k] = f.a * (std::int64_t{1} << c.bits);
+        dy[k] = f.b * (std::int64_t{1} << c.bits);
+    }
+}
+
+// Whether t's coverage comes from integer edges (the fixed path's, or the wide path's near ones) rather
+// than spans or float edges; if so, e, dx and dy are set as fixed_edges_at sets them.
+inline bool integer_edges_at(const Setup& t, const Context& c, const Block& b, int s, std::int64_t* e,
+                             std::int64_t* dx, std::int64_t* dy) {
+    if (t.p.path == Path::fixed) fixed_edges_at(t.fixed, c, b, s, e, dx, dy);
+    else if (t.near) wide_edges_at(*t.near, c, b, s, e, dx, dy);
+    else return false;
+    return true;
+}
+
 // masks[r]: the samples of row r of block b (sample index s) inside the integer edges, each row's run
 // walked from the row before (row_masks, after spans.h) rather than found by evaluating the edges along
 // the row. masks holds kTile entries.
@@ -73,6 +97,11 @@ Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, st
             fixed_edges_at(t.fixed, c, b, s, cov.e, cov.dx, cov.dy);
             return cov;
         case Path::wide: {
+            if (t.near) {
+                cov.kind = Coverage::Kind::fixed;
+                wide_edges_at(*t.near, c, b, s, cov.e, cov.dx, cov.dy);
+                return cov;
+            }
             const std::size_t samples = c.offsets.size();
             for (int r = 0; r < b.rows; ++r) {
                 const Span& span = wide[static_cast<std::size_t>(r) * samples + s];
@@ -109,23 +138,27 @@ Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, st
 
 enum class TileClass { reject, accept, partial };
 
-// The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: an edge function is linear, so its
-// extremes over the samples' bounding rectangle are at corners chosen by the signs of its coefficients.
-// Exact for the integer path; the wide path reads what its spans lie within per band instead. For the float
-// modes the double value at a corner is within margin of the exact one minus the mode's error bound, so
-// beyond +-margin the mode's sign is certain.
+// The Larrabee test of integer edges (FixedEdge or WideEdge) on the samples' bounding rectangle: an edge
+// function is linear, so its extremes there are at corners chosen by the signs of its coefficients.
+template <class Edges>
+TileClass classify_integer(const Edges& edges, const FixedRect& rect) {
+    bool all_inside = true;
+    for (const auto& f : edges) {
+        if (greatest_over(f, rect) < 0) return TileClass::reject;
+        all_inside = all_inside && least_over(f, rect) >= 0;
+    }
+    return all_inside ? TileClass::accept : TileClass::partial;
+}
+
+// The Larrabee test on the samples of pixels [i0, i1] x [j0, j1]: exact for the integer path and the wide
+// path's near edges (in 128 bits); a wide triangle without them reads what its spans lie within per band
+// instead. For the float modes the double value at a corner is within margin of the exact one minus the
+// mode's error bound, so beyond +-margin the mode's sign is certain.
 inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int j0, int j1) {
     if (!t.classify_tiles) return TileClass::partial;
     bool all_inside = true;
     switch (t.p.path) {
-        case Path::fixed: {
-            const FixedRect rect = samples_rect(c, i0, i1, j0, j1);
-            for (const FixedEdge& f : t.fixed) {
-                if (greatest_over(f, rect) < 0) return TileClass::reject;
-                all_inside = all_inside && least_over(f, rect) >= 0;
-            }
-            break;
-        }
+        case Path::fixed: return classify_integer(t.fixed, samples_rect(c, i0, i1, j0, j1));
         case Path::floating: {
             if (!(t.float_margin < std::numeric_limits<double>::infinity())) return TileClass::partial;
             const double x_lo = i0 + c.ox_min, x_hi = i1 + c.ox_max, y_lo = j0 + c.oy_min, y_hi = j1 + c.oy_max;
@@ -139,6 +172,7 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
             break;
         }
         case Path::wide: {
+            if (t.near) return classify_integer(*t.near, samples_rect(c, i0, i1, j0, j1));
             // [j0, j1] is the triangle's rows in one row of tiles: one band's (SpanBand).
             const SpanBand& band = t.bands[static_cast<std::size_t>(j0 / kTile - t.p.j_lo / kTile)];
             if (band.lo_max <= i0 && band.hi_min >= i1) return TileClass::accept;

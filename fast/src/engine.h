@@ -248,7 +248,7 @@ std::vector<std::size_t> covered_by(const Triangle& triangle, Viewport vp, int s
     std::vector<Span> wide;
     for (int j0 = t.p.j_lo; j0 <= t.p.j_hi; j0 += kTile) {
         const int rows = std::min(kTile, t.p.j_hi - j0 + 1);
-        if (t.p.path == Path::wide) {
+        if (t.p.path == Path::wide && !t.near) {
             wide.resize(static_cast<std::size_t>(rows) * samples);
             spans_of(t, c, j0, j0 + rows - 1, wide);
         }

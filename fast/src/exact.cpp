@@ -14,7 +14,6 @@ namespace rast::fast::detail {
 namespace {
 
 using boost::multiprecision::cpp_int;
-__extension__ using Int128 = __int128;  // GCC and Clang on x86-64
 
 // A dyadic rational m · 2^e. Every double is one, and sums and products of them stay exact in integer
 // arithmetic alone: no gcd per operation, unlike cpp_rational.
@@ -231,14 +230,22 @@ std::vector<SpanBand> solve_bands(Scale scale, const Corners& v, int bits, const
 // Calls solve(scale) with the narrowest integers that hold every edge function of v exactly: fixed
 // coordinates within 2^60 (sample positions, below 2^(24 + bits), are) keep A and B below 2^61, C below
 // 2^122 and Q below 2^124, so 128-bit integers do, at a small fraction of big-integer cost.
-template <class Solve>
-void with_integers(const Corners& v, int bits, Solve solve) {
+bool fits_128(const Corners& v, int bits) {
     const double limit = std::ldexp(1.0, 60 - bits);
-    const bool fits = std::all_of(v.begin(), v.end(), [limit](const Vertex& p) {
+    return std::all_of(v.begin(), v.end(), [limit](const Vertex& p) {
         return std::abs(p.x) <= limit && std::abs(p.y) <= limit;
     });
-    // A double within 2^60 holding an integer converts exactly.
-    if (fits) solve([bits](double x) { return Int128(static_cast<std::int64_t>(std::ldexp(x, bits))); });
+}
+
+// x · 2^bits as an Int128, for x within 2^(60 - bits): a double within 2^60 holding an integer converts
+// exactly.
+auto scale_128(int bits) {
+    return [bits](double x) { return Int128(static_cast<std::int64_t>(std::ldexp(x, bits))); };
+}
+
+template <class Solve>
+void with_integers(const Corners& v, int bits, Solve solve) {
+    if (fits_128(v, bits)) solve(scale_128(bits));
     else solve([bits](double x) { return scaled(x, bits); });
 }
 
@@ -338,6 +345,19 @@ void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive
         using Int = decltype(scale(0.0));
         solve_spans<Int>(scale, v, bits, inclusive, offsets, i_lo, i_hi, j_lo, j_hi, spans);
     });
+}
+
+std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive) {
+    if (!fits_128(v, bits)) return std::nullopt;
+    const Int128 limit = Int128(1) << (50 - bits);
+    std::array<WideEdge, 3> out;
+    const std::array<Edge<Int128>, 3> edges = edges_of<Int128>(scale_128(bits), v, inclusive);
+    for (std::size_t k = 0; k < 3; ++k) {
+        const Edge<Int128>& e = edges[k];
+        if (!(-limit < e.a && e.a < limit && -limit < e.b && e.b < limit)) return std::nullopt;
+        out[k] = {static_cast<std::int64_t>(e.a), static_cast<std::int64_t>(e.b), e.c};
+    }
+    return out;
 }
 
 std::vector<SpanBand> wide_bands(const Corners& v, int bits, const std::array<bool, 3>& inclusive,

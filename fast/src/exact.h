@@ -1,6 +1,6 @@
 // The decisions double arithmetic cannot settle, made exactly (Boost.Multiprecision, private to
-// exact.cpp): triangle orientation on arbitrary doubles, the depth order at a sample, and the covered
-// spans of a triangle beyond the 64-bit fixed-point range (the wide path).
+// exact.cpp): triangle orientation on arbitrary doubles, the depth order at a sample, and the edges and
+// covered spans of a triangle beyond the 64-bit fixed-point range (the wide path).
 #pragma once
 
 #include "spans.h"
@@ -10,12 +10,14 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
 namespace rast::fast::detail {
 
 using Corners = std::array<Vertex, 3>;
+__extension__ using Int128 = __int128;  // GCC and Clang on x86-64
 
 // Sign (-1, 0, 1) of (v1 - v0) x (v2 - v0): 1 for counter-clockwise.
 int orientation(const Corners& v);
@@ -63,6 +65,17 @@ double nearest(const DepthAt& a);
 void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                 std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
                 std::span<Span> spans);
+
+// The wide path's integer edges for a triangle near enough to walk a tile's rows in 64 bits: E(X, Y) =
+// a X + b Y + c at a sample (X, Y) in fixed units, exactly in 128 bits, covered iff E >= 0 (the tie
+// rule in c). a and b are then below 2^(50 - bits), so that a pixel's step is below 2^50 (kWideStep in
+// coverage.h); a triangle with a larger one, or a coordinate beyond 2^60 fixed units, has none and keeps
+// its spans.
+struct WideEdge {
+    std::int64_t a, b;
+    Int128 c;
+};
+std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive);
 
 // For the same triangle and rows, the bands of `rows` pixel rows (band k holds the rows
 // [k rows, (k + 1) rows) of [j_lo, j_hi], k from j_lo / rows on) that its spans lie within, found

@@ -98,6 +98,24 @@ inline std::int64_t greatest_over(const FixedEdge& f, const FixedRect& r) {
     return f.a * (f.a >= 0 ? r.x_hi : r.x_lo) + f.b * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
 }
 
+// A wide edge's steps per pixel are below kWideStep (wide_edges), so over a tile's samples, and the few
+// rows past them that row_masks walks, it changes by less than 2^58: where its value at the tile's first
+// sample is beyond +-kWideClamp, taking +-kWideClamp there instead keeps its sign at every one of them,
+// and every value and step stays within the fixed path's 2^61.
+inline constexpr std::int64_t kWideStep = std::int64_t{1} << 50;
+inline constexpr std::int64_t kWideClamp = std::int64_t{1} << 60;
+inline std::int64_t clamped(Int128 value) {
+    return static_cast<std::int64_t>(std::clamp<Int128>(value, -kWideClamp, kWideClamp));
+}
+
+// And a wide edge's, exactly.
+inline Int128 least_over(const WideEdge& f, const FixedRect& r) {
+    return Int128{f.a} * (f.a >= 0 ? r.x_lo : r.x_hi) + Int128{f.b} * (f.b >= 0 ? r.y_lo : r.y_hi) + f.c;
+}
+inline Int128 greatest_over(const WideEdge& f, const FixedRect& r) {
+    return Int128{f.a} * (f.a >= 0 ? r.x_hi : r.x_lo) + Int128{f.b} * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
+}
+
 // Edge k of corners v, from v[k] to v[k + 1], in doubles: E(p) = d1 (py - ay) - d3 (px - ax), d1 and d3
 // the corners' differences rounded (each has the exact one's sign), as the float modes' whole-tile test
 // takes it.
@@ -145,12 +163,14 @@ struct Setup {
     // Float modes: a tile whose samples all have an exact edge function beyond +-margin on the same
     // side for each edge is classified without evaluating them; +infinity when not computed.
     double float_margin = std::numeric_limits<double>::infinity();
-    // Wide path: which edges own the samples exactly on them (wide_spans' inclusive), and with
-    // classify_tiles what its spans lie within per row of screen tiles. The spans themselves are found
-    // where a tile needs them (spans_of) rather than kept from binning to the end of the render: at 8
-    // bytes per row and sample each, thousands of triangles reaching far beyond a large screen held
-    // gigabytes.
+    // Wide path: which edges own the samples exactly on them (wide_spans' inclusive); its near edges
+    // where wide_edges finds them, which classify tiles and from which a partial tile's rows are walked
+    // in 64 bits (wide_edges_at, coverage.h); otherwise, with classify_tiles, what its spans lie within
+    // per row of screen tiles. The spans themselves are found where a tile needs them (spans_of) rather
+    // than kept from binning to the end of the render: at 8 bytes per row and sample each, thousands of
+    // triangles reaching far beyond a large screen held gigabytes.
     std::array<bool, 3> owns{};
+    std::optional<std::array<WideEdge, 3>> near;
     std::vector<SpanBand> bands;
 };
 
@@ -458,7 +478,8 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
         }
         case Path::wide:
             s.owns = owning_edges<F>(v);
-            if (classify_tiles)
+            s.near = wide_edges(v, c.bits, s.owns);
+            if (classify_tiles && !s.near)
                 s.bands = wide_bands(v, c.bits, s.owns, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi, kTile);
             break;
     }

@@ -238,7 +238,8 @@ inline void cover_subtiles(const Setup& t, const Context& c, TileBuffer& tile, i
     const Plane& p = t.plane;
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
     const bool floating = t.p.path == Path::floating;
-    if (!(p.err < kInfinity) || (floating && !(t.float_margin < kInfinity)) || t.p.path == Path::wide) return;
+    if (!(p.err < kInfinity) || (floating && !(t.float_margin < kInfinity)) || (t.p.path == Path::wide && !t.near))
+        return;
     const int bx0 = (i0 - ti + kSubtile - 1) / kSubtile, bx1 = (i1 - ti + 1) / kSubtile - 1;
     const int by0 = (j0 - tj + kSubtile - 1) / kSubtile, by1 = (j1 - tj + 1) / kSubtile - 1;
     if (bx0 > bx1 || by0 > by1) return;
@@ -258,10 +259,11 @@ inline void cover_subtiles(const Setup& t, const Context& c, TileBuffer& tile, i
         const int x = ti + bx0 * kSubtile, y = tj + by0 * kSubtile;
         const FixedRect first = samples_rect(c, x, x + kSubtile - 1, y, y + kSubtile - 1);  // subtile (bx0, by0)'s
         const std::int64_t step = std::int64_t{kSubtile} << c.bits;
-        for (int e = 0; e < 3; ++e) {
-            cover.lowest[e] = least_over(t.fixed[static_cast<std::size_t>(e)], first);
-            cover.across[e] = t.fixed[static_cast<std::size_t>(e)].a * step;
-            cover.down[e] = t.fixed[static_cast<std::size_t>(e)].b * step;
+        for (std::size_t e = 0; e < 3; ++e) {
+            const bool wide = t.p.path == Path::wide;
+            cover.lowest[e] = wide ? clamped(least_over((*t.near)[e], first)) : least_over(t.fixed[e], first);
+            cover.across[e] = (wide ? (*t.near)[e].a : t.fixed[e].a) * step;
+            cover.down[e] = (wide ? (*t.near)[e].b : t.fixed[e].b) * step;
         }
     }
     lower_covered_subtiles(cover, tile.subtile_far);

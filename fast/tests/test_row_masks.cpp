@@ -25,11 +25,12 @@ std::uint64_t expected_row(const RowEdges& e, int width, int r) {
 }
 
 // An edge through a random point of the block (so that rows are partly covered), or parallel to the rows
-// or columns, with the fixed path's magnitudes: coefficients below 2^46 (coordinate differences below
-// 2^30, times 2^16), values below 2^61.
+// or columns, or far from the block, with the fixed path's magnitudes (coefficients below 2^46: coordinate
+// differences below 2^30, times 2^16; values below 2^61) and the wide path's near edges' (coefficients
+// below 2^50, values at the first sample within 2^60: kWideStep and kWideClamp, coverage.h).
 void random_edge(std::mt19937_64& rng, int width, int rows, RowEdges& e, int k) {
     const auto magnitude = [&rng] {
-        const int bits = std::uniform_int_distribution<int>(0, 46)(rng);
+        const int bits = std::uniform_int_distribution<int>(0, 50)(rng);
         const auto m = static_cast<std::int64_t>(rng() >> (64 - bits - 1) >> 1);
         return rng() & 1 ? m : -m;
     };
@@ -39,7 +40,10 @@ void random_edge(std::mt19937_64& rng, int width, int rows, RowEdges& e, int k) 
     const int i = std::uniform_int_distribution<int>(0, width - 1)(rng);
     const int r = std::uniform_int_distribution<int>(0, rows - 1)(rng);
     const std::int64_t nudge = std::uniform_int_distribution<std::int64_t>(-3, 3)(rng);
-    e.q[k] = shape == 2 ? magnitude() << 14 : -(e.p[k] * i + e.step[k] * r) + nudge;
+    const std::int64_t clamp = std::int64_t{1} << 60;
+    e.q[k] = shape == 2   ? magnitude() * 1024
+             : shape == 3 ? (rng() & 1 ? clamp : -clamp)
+                          : -(e.p[k] * i + e.step[k] * r) + nudge;
 }
 
 TEST(RowMasks, EqualTheEdgeFunctionsAtEverySampleOnEveryTarget) {

@@ -248,29 +248,40 @@ bool far_bounds(TileBuffer& tile, const TileRect& rect, const Context& c, std::s
 }
 
 // Big triangles composed one by one into the tile at (64, 64) of a 128 x 128 viewport, 1 and 4 samples,
-// fixed8 (integer edges) and the float modes (the whole-tile margin): a random background, random
+// fixed8 (integer edges), the float modes (the whole-tile margin) and fixed8 on a viewport too large for
+// its 64-bit range (the wide path's near edges; its background's, far away, clamped): a random background, random
 // triangles of either slope, right triangles whose legs run along a subtile's pixel centres, and copies
 // of the one before with its corners turned (the same exact plane, a double plane of its own, ties to the
 // lower id): after each, the far depths the covered subtiles took from the plane (without a refresh of
 // the tile) bound what their subtiles hold, and so does the tile's. Most triangles cover some subtile
 // whole.
 TEST(Subtiles, CoveredSubtilesFarDepthsBoundWhatTheyHoldOnEveryTarget) {
-    const Precision precisions[] = {Precision::fixed8, Precision::float32, Precision::float64};
+    struct Variant {
+        Precision precision;
+        int side;  // of the viewport
+        Path path;
+    };
+    const Variant variants[] = {{Precision::fixed8, 128, Path::fixed},
+                                {Precision::float32, 128, Path::floating},
+                                {Precision::float64, 128, Path::floating},
+                                {Precision::fixed8, 1 << 22, Path::wide}};
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        for (const Precision precision : precisions) {
+        for (const auto [precision, side, path] : variants) {
             hwy::SetSupportedTargetsForTest(target);
             SCOPED_TRACE(hwy::TargetName(target));
             SCOPED_TRACE(static_cast<int>(precision));
+            SCOPED_TRACE(side);
             long lowered = 0, checked = 0;
             for (const int samples : {1, 4}) {
-                const Context c = make_context<Fault::none>({128, 128}, samples, precision);
+                const Context c = make_context<Fault::none>({side, side}, samples, precision);
                 const TileRect rect{64, 127, 64, 127};
                 std::mt19937_64 rng(20261128 + static_cast<std::uint64_t>(samples));
                 std::uniform_real_distribution<double> unit(0, 1);
                 for (int scene = 0; scene < 8; ++scene) {
                     std::vector<Triangle> triangles;
                     const double back = 0.9 + 0.05 * unit(rng);
-                    triangles.push_back(Triangle{{{{-200, -200, back}, {400, -200, back}, {-200, 400, back + 0.01}}}});
+                    const double r = path == Path::wide ? 0x1p29 : 200;  // the wide background's edges clamped
+                    triangles.push_back(Triangle{{{{-r, -r, back}, {2 * r, -r, back}, {-r, 2 * r, back + 0.01}}}});
                     while (triangles.size() < 24) {
                         if (triangles.size() > 1 && rng() % 3 == 0) {
                             const auto& v = triangles.back().v;
@@ -305,7 +316,7 @@ TEST(Subtiles, CoveredSubtilesFarDepthsBoundWhatTheyHoldOnEveryTarget) {
                     tile.clear();
                     for (std::size_t id = 0; id < triangles.size(); ++id) {
                         const std::optional<Placed> p = place<Fault::none>(triangles[id], c);
-                        ASSERT_TRUE(p && p->path == (precision == Precision::fixed8 ? Path::fixed : Path::floating));
+                        ASSERT_TRUE(p && p->path == path);
                         const detail::Setup t = setup_triangle<Fault::none>(*p, c, true);
                         double before[kSubtiles * kSubtiles];
                         std::copy(std::begin(tile.subtile_far), std::end(tile.subtile_far), before);
