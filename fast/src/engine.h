@@ -27,9 +27,11 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -47,6 +49,18 @@ inline void prefetch(const Setup& s) {
     prefetch_bytes(address(&s), address(&s.classify_tiles) + sizeof(s.classify_tiles) - address(&s));
 }
 
+// One tile row of empty samples (kTile pixels of up to kMaxSamples), what an empty tile is copied out from.
+struct EmptyRow {
+    std::array<double, kTile * kMaxSamples> z;
+    std::array<std::int32_t, kTile * kMaxSamples> ids;
+};
+inline constexpr EmptyRow kEmptyRow = [] {
+    EmptyRow row{};
+    row.z.fill(std::numeric_limits<double>::infinity());
+    row.ids.fill(Framebuffer::kNoTriangle);
+    return row;
+}();
+
 template <Fault F>
 void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::Entry> occluders, std::size_t index,
                  const TileRect& rect, TileBuffer& tile, const SceneView& scene, Framebuffer& fb) {
@@ -55,15 +69,16 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
     // A tile no triangle reaches is written empty straight into the framebuffer, where its pixels' samples
     // are contiguous row by row: clearing the tile buffer and copying it out moves its bytes twice more
     // (2.5 ms for a 1024 x 1024 screen on one thread, half the time of a mesh that leaves most tiles empty).
+    // Its rows are copied from kEmptyRow by copy_out, streamed as every other tile's (filled by ordinary
+    // stores, each line of the framebuffer was read first: an empty 1024 x 1024 frame took 1.03 ms, now
+    // 0.65 ms, on an Intel Xeon VM).
     const bool empty = occluders.empty() && std::all_of(chunks.begin(), chunks.end(), [index](const Chunk& chunk) {
         return chunk.fixed_bins[index].empty() && chunk.small_bins[index].empty() && chunk.big_bins[index].empty();
     });
     if (empty) {
-        const std::size_t row = static_cast<std::size_t>(width) * samples;
-        for (int j = rect.j0; j <= rect.j1; ++j) {
-            std::fill_n(fb.ids.begin() + fb.index(rect.i0, j), row, Framebuffer::kNoTriangle);
-            fill_far(fb.depth.data() + fb.index(rect.i0, j), row);
-        }
+        const std::size_t at = fb.index(rect.i0, rect.j0);
+        copy_out(kEmptyRow.z.data(), kEmptyRow.ids.data(), 0, fb.depth.data() + at, fb.ids.data() + at,
+                 static_cast<std::ptrdiff_t>(fb.index(0, 1)), width * samples, rect.j1 - rect.j0 + 1);
         return;
     }
     tile.clear();
