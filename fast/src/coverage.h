@@ -50,17 +50,15 @@ inline void fixed_edges_at(const std::array<FixedEdge, 3>& edges, const Context&
     }
 }
 
-// The wide path's edges at block b's first sample (index s) and their steps, as fixed_edges_at gives the
-// fixed path's: exact in 128 bits, then clamped.
+// The wide path's edges in pixel steps (WideEdge) at block b's first sample (index s) and their steps,
+// as fixed_edges_at gives the fixed path's: exact in 128 bits, then clamped.
 inline void wide_edges_at(const std::array<WideEdge, 3>& edges, const Context& c, const Block& b, int s,
                           std::int64_t* e, std::int64_t* dx, std::int64_t* dy) {
-    const Int128 x = (Int128{b.i0} << c.bits) + c.sx[s];
-    const Int128 y = (Int128{b.j0} << c.bits) + c.sy[s];
     for (int k = 0; k < 3; ++k) {
         const WideEdge& f = edges[k];
-        e[k] = clamped(f.a * x + f.b * y + f.c);
-        dx[k] = f.a * (std::int64_t{1} << c.bits);
-        dy[k] = f.b * (std::int64_t{1} << c.bits);
+        e[k] = clamped(Int128{f.a} * b.i0 + Int128{f.b} * b.j0 + offset_term(f, c.bits, c.sx[s], c.sy[s]));
+        dx[k] = f.a;
+        dy[k] = f.b;
     }
 }
 
@@ -138,10 +136,11 @@ Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, st
 
 enum class TileClass { reject, accept, partial };
 
-// The Larrabee test of integer edges (FixedEdge or WideEdge) on the samples' bounding rectangle: an edge
-// function is linear, so its extremes there are at corners chosen by the signs of its coefficients.
-template <class Edges>
-TileClass classify_integer(const Edges& edges, const FixedRect& rect) {
+// The Larrabee test of integer edges over the samples of a rectangle of pixels (FixedEdge over their
+// bounding rectangle, FixedRect; WideEdge over the pixels, TileRect): an edge function is linear, so its
+// extremes there are at corners chosen by the signs of its coefficients.
+template <class Edges, class Rect>
+TileClass classify_integer(const Edges& edges, const Rect& rect) {
     bool all_inside = true;
     for (const auto& f : edges) {
         if (greatest_over(f, rect) < 0) return TileClass::reject;
@@ -172,7 +171,7 @@ inline TileClass classify(const Setup& t, const Context& c, int i0, int i1, int 
             break;
         }
         case Path::wide: {
-            if (t.near) return classify_integer(*t.near, samples_rect(c, i0, i1, j0, j1));
+            if (t.near) return classify_integer(*t.near, TileRect{i0, i1, j0, j1});
             // [j0, j1] is the triangle's rows in one row of tiles: one band's (SpanBand).
             const SpanBand& band = t.bands[static_cast<std::size_t>(j0 / kTile - t.p.j_lo / kTile)];
             if (band.lo_max <= i0 && band.hi_min >= i1) return TileClass::accept;

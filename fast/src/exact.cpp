@@ -347,15 +347,22 @@ void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive
     });
 }
 
-std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive) {
+std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                                                  std::span<const std::int64_t> sx, std::span<const std::int64_t> sy) {
     if (!fits_128(v, bits)) return std::nullopt;
-    const Int128 limit = Int128(1) << (50 - bits);
+    const Int128 limit = Int128(1) << 50;
     std::array<WideEdge, 3> out;
     const std::array<Edge<Int128>, 3> edges = edges_of<Int128>(scale_128(bits), v, inclusive);
     for (std::size_t k = 0; k < 3; ++k) {
         const Edge<Int128>& e = edges[k];
         if (!(-limit < e.a && e.a < limit && -limit < e.b && e.b < limit)) return std::nullopt;
-        out[k] = {static_cast<std::int64_t>(e.a), static_cast<std::int64_t>(e.b), e.c};
+        WideEdge& f = out[k];
+        f = {static_cast<std::int64_t>(e.a), static_cast<std::int64_t>(e.b), e.c, 0, 0};
+        for (std::size_t s = 0; s < sx.size(); ++s) {
+            const Int128 term = offset_term(f, bits, sx[s], sy[s]);
+            f.least = s == 0 ? term : std::min(f.least, term);
+            f.greatest = s == 0 ? term : std::max(f.greatest, term);
+        }
     }
     return out;
 }

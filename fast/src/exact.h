@@ -66,16 +66,27 @@ void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive
                 std::span<const SamplePoint> offsets, int i_lo, int i_hi, int j_lo, int j_hi,
                 std::span<Span> spans);
 
-// The wide path's integer edges for a triangle near enough to walk a tile's rows in 64 bits: E(X, Y) =
-// a X + b Y + c at a sample (X, Y) in fixed units, exactly in 128 bits, covered iff E >= 0 (the tie
-// rule in c). a and b are then below 2^(50 - bits), so that a pixel's step is below 2^50 (kWideStep in
-// coverage.h); a triangle with a larger one, or a coordinate beyond 2^60 fixed units, has none and keeps
-// its spans.
+// The wide path's integer edges for a triangle near enough that a tile's rows are walked in 64 bits, in
+// steps of a pixel. E(X, Y) = a X + b Y + c in fixed units (the tie rule in c: covered iff E >= 0); at
+// the sample of pixel (i, j) with offset (sx, sy) in fixed units, E = 2^bits (a i + b j) + C with
+// C = a sx + b sy + c, and a i + b j is an integer, so the sample is covered exactly where
+// a i + b j + floor(C / 2^bits) >= 0 (offset_term). least and greatest: that term's extremes over the
+// sample offsets.
 struct WideEdge {
     std::int64_t a, b;
-    Int128 c;
+    Int128 c, least, greatest;
 };
-std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive);
+
+inline Int128 offset_term(const WideEdge& f, int bits, std::int64_t sx, std::int64_t sy) {
+    return (Int128{f.a} * sx + Int128{f.b} * sy + f.c) >> bits;  // an arithmetic shift: floor
+}
+
+// The edges of a counter-clockwise triangle whose corners are multiples of 2^-bits, for the sample offsets
+// (sx[k], sy[k]) in fixed units, where its coordinates lie within 2^(60 - bits) pixels and a and b are
+// below 2^50 (kWideStep, setup.h; its coordinates differ by less than 2^(50 - bits) pixels); otherwise
+// none, and the triangle keeps its spans.
+std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
+                                                  std::span<const std::int64_t> sx, std::span<const std::int64_t> sy);
 
 // For the same triangle and rows, the bands of `rows` pixel rows (band k holds the rows
 // [k rows, (k + 1) rows) of [j_lo, j_hi], k from j_lo / rows on) that its spans lie within, found

@@ -98,22 +98,28 @@ inline std::int64_t greatest_over(const FixedEdge& f, const FixedRect& r) {
     return f.a * (f.a >= 0 ? r.x_hi : r.x_lo) + f.b * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
 }
 
+// The pixels [i0, i1] x [j0, j1].
+struct TileRect {
+    int i0, i1, j0, j1;
+};
+
 // A wide edge's steps per pixel are below kWideStep (wide_edges), so over a tile's samples, and the few
-// rows past them that row_masks walks, it changes by less than 2^58: where its value at the tile's first
-// sample is beyond +-kWideClamp, taking +-kWideClamp there instead keeps its sign at every one of them,
-// and every value and step stays within the fixed path's 2^61.
+// rows past them that row_masks walks, its value in pixel steps (WideEdge) changes by less than 2^58:
+// where that value at the tile's first sample is beyond +-kWideClamp, taking +-kWideClamp there instead
+// keeps its sign at every one of them, and every value and step stays within the fixed path's 2^61.
 inline constexpr std::int64_t kWideStep = std::int64_t{1} << 50;
 inline constexpr std::int64_t kWideClamp = std::int64_t{1} << 60;
 inline std::int64_t clamped(Int128 value) {
     return static_cast<std::int64_t>(std::clamp<Int128>(value, -kWideClamp, kWideClamp));
 }
 
-// And a wide edge's, exactly.
-inline Int128 least_over(const WideEdge& f, const FixedRect& r) {
-    return Int128{f.a} * (f.a >= 0 ? r.x_lo : r.x_hi) + Int128{f.b} * (f.b >= 0 ? r.y_lo : r.y_hi) + f.c;
+// A wide edge's least and greatest values in pixel steps over the samples of a rectangle of pixels,
+// exactly.
+inline Int128 least_over(const WideEdge& f, const TileRect& r) {
+    return Int128{f.a} * (f.a >= 0 ? r.i0 : r.i1) + Int128{f.b} * (f.b >= 0 ? r.j0 : r.j1) + f.least;
 }
-inline Int128 greatest_over(const WideEdge& f, const FixedRect& r) {
-    return Int128{f.a} * (f.a >= 0 ? r.x_hi : r.x_lo) + Int128{f.b} * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
+inline Int128 greatest_over(const WideEdge& f, const TileRect& r) {
+    return Int128{f.a} * (f.a >= 0 ? r.i1 : r.i0) + Int128{f.b} * (f.b >= 0 ? r.j1 : r.j0) + f.greatest;
 }
 
 // Edge k of corners v, from v[k] to v[k + 1], in doubles: E(p) = d1 (py - ay) - d3 (px - ax), d1 and d3
@@ -478,7 +484,7 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
         }
         case Path::wide:
             s.owns = owning_edges<F>(v);
-            s.near = wide_edges(v, c.bits, s.owns);
+            s.near = wide_edges(v, c.bits, s.owns, c.sx, c.sy);
             if (classify_tiles && !s.near)
                 s.bands = wide_bands(v, c.bits, s.owns, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi, kTile);
             break;

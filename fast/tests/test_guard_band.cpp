@@ -115,8 +115,8 @@ TEST(GuardBandFixed, SmallBoxOfALargeTriangleOnBothSidesOf32BitEdges) {
 
 // The wide path classifies whole tiles, by its near edges' values at their corners or by its spans'
 // extremes per row of tiles, on a viewport of 4 x 3 tiles (the last ones partial), with triangles whose
-// other corners are far enough away for the wide path in every fixed mode: near edges in fixed4 and
-// fixed8 at 2^30 pixels, none beyond, with its 128-bit integers and with big ones. A vertical left edge x = 70.5
+// other corners are far enough away for the wide path in every fixed mode: near edges at 2^30 pixels,
+// none at 2^50, with its 128-bit integers and with big ones. A vertical left edge x = 70.5
 // through the centres (owned) covers columns 70.. (as in FarVerticesKeepTheTieRule): the second column
 // of tiles is partial, the third and fourth accepted. A vertical right edge x = 129.5 (not owned) covers
 // columns ..128: the first two columns of tiles are accepted, the third partial (its box ends at 129).

@@ -3,7 +3,7 @@
 // stand for (wide_spans, walked in 128-bit integers from the triangle's first row), on blocks anywhere in
 // the largest viewport: along the edges, where edges through samples make ties, and far from them, where
 // the edges' values are beyond 64 bits and the clamp alone keeps their signs. And which triangles have
-// near edges: those whose coordinate differences are all below 2^(50 - 2 bits) pixels.
+// near edges: those whose coordinate differences are all below 2^(50 - bits) pixels.
 #include "coverage.h"
 #include "scalar.h"
 #include "setup.h"
@@ -55,22 +55,29 @@ Block random_block(std::mt19937_64& rng, const Context& c, const Corners& v, int
     return {i0, j0, width, rows, c.offsets[static_cast<std::size_t>(s)].x, c.offsets[static_cast<std::size_t>(s)].y};
 }
 
+// Every target again at the end of a scope, whether or not an assertion left it early: a test run after
+// one that failed here would otherwise see one target only.
+struct EveryTargetAfter {
+    ~EveryTargetAfter() { hwy::SetSupportedTargetsForTest(0); }
+};
+
 TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
     for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+        const EveryTargetAfter reset;
         hwy::SetSupportedTargetsForTest(target);
         std::mt19937_64 rng(20261129);
         int partly_covered = 0, clamped = 0, beyond_64_bits = 0, without = 0;
         for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
             for (const int samples : {1, 4}) {
                 const Context c = make_context<Fault::none>({kSide, kSide}, samples, precision);
-                const int limit = 50 - 2 * c.bits;  // near edges below 2^limit pixels
+                const int limit = 50 - c.bits;  // near edges below 2^limit pixels
                 for (int n = 0; n < 300; ++n) {
-                    const Corners corners = wide_triangle(rng, c, limit);
+                    const Corners corners = wide_triangle(rng, c, limit + 1);
                     const std::optional<Placed> placed = place<Fault::none>(Triangle{corners}, c);
                     if (!placed || placed->path != Path::wide) continue;  // fixed4's range holds the viewport
                     const Corners& v = placed->v;
                     const std::array<bool, 3> owns = owning_edges<Fault::none>(v);
-                    const std::optional<std::array<WideEdge, 3>> near = wide_edges(v, c.bits, owns);
+                    const std::optional<std::array<WideEdge, 3>> near = wide_edges(v, c.bits, owns, c.sx, c.sy);
                     double widest = 0;
                     for (int k = 0; k < 3; ++k) {
                         const Vertex &a = v[static_cast<std::size_t>(k)], &b = v[static_cast<std::size_t>((k + 1) % 3)];
@@ -101,18 +108,17 @@ TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
                                 << name(precision) << " triangle " << n << " row " << r;
                             partly_covered += expected != 0 && expected != first_bits(b.width);
                         }
-                        for (int k = 0; k < 3; ++k) {
-                            const WideEdge& f = (*near)[static_cast<std::size_t>(k)];
-                            const Int128 x = (Int128{b.i0} << c.bits) + c.sx[static_cast<std::size_t>(s)];
-                            const Int128 y = (Int128{b.j0} << c.bits) + c.sy[static_cast<std::size_t>(s)];
-                            const Int128 value = f.a * x + f.b * y + f.c, magnitude = value < 0 ? -value : value;
+                        for (const WideEdge& f : *near) {
+                            const Int128 value = Int128{f.a} * b.i0 + Int128{f.b} * b.j0 +
+                                                 offset_term(f, c.bits, c.sx[static_cast<std::size_t>(s)],
+                                                             c.sy[static_cast<std::size_t>(s)]);
+                            const Int128 magnitude = value < 0 ? -value : value;
                             clamped += magnitude > kWideClamp;
                             beyond_64_bits += magnitude >> 63 != 0;
                         }
                     }
                 }
             }
-        hwy::SetSupportedTargetsForTest(0);
         // The cases are not all trivial: rows the edges cut, edges whose values at a block were clamped,
         // some beyond 64 bits, and triangles just past the limit.
         EXPECT_GT(partly_covered, 10000) << hwy::TargetName(target);
@@ -120,6 +126,43 @@ TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
         EXPECT_GT(beyond_64_bits, 1000) << hwy::TargetName(target);
         EXPECT_GT(without, 50) << hwy::TargetName(target);
     }
+}
+
+// The whole-tile test on near edges, against the spans: a rejected tile holds no covered sample, an
+// accepted one only covered samples, at every sample index; tiles around the edges' points, with 1, 4 and
+// 16 samples, where the sample offsets' own terms (WideEdge::least, greatest) differ.
+TEST(WideRows, NearEdgesClassifyTilesAsTheirSpansDo) {
+    std::mt19937_64 rng(20261130);
+    int rejected = 0, accepted = 0;
+    for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
+        for (const int samples : {1, 4, 16}) {
+            const Context c = make_context<Fault::none>({kSide, kSide}, samples, precision);
+            for (int n = 0; n < 200; ++n) {
+                const std::optional<Placed> placed =
+                    place<Fault::none>(Triangle{wide_triangle(rng, c, 50 - c.bits)}, c);
+                // Those without near edges left out before their setup, which would find their spans' bands
+                // down the whole viewport.
+                if (!placed || placed->path != Path::wide ||
+                    !wide_edges(placed->v, c.bits, owning_edges<Fault::none>(placed->v), c.sx, c.sy))
+                    continue;
+                const detail::Setup t = setup_triangle<Fault::none>(*placed, c, true);
+                for (int trial = 0; trial < 8; ++trial) {
+                    const Block b = random_block(rng, c, t.p.v, 0);
+                    const int i1 = b.i0 + b.width - 1, j1 = b.j0 + b.rows - 1;
+                    const TileClass cls = classify(t, c, b.i0, i1, b.j0, j1);
+                    if (cls == TileClass::partial) continue;
+                    std::vector<Span> spans(static_cast<std::size_t>(b.rows) * c.offsets.size());
+                    wide_spans(t.p.v, c.bits, t.owns, c.offsets, b.i0, i1, b.j0, j1, spans);
+                    for (const Span& span : spans) {
+                        if (cls == TileClass::reject) ASSERT_GT(span.lo, span.hi) << name(precision) << " " << n;
+                        else ASSERT_TRUE(span.lo == b.i0 && span.hi == i1) << name(precision) << " " << n;
+                    }
+                    ++(cls == TileClass::reject ? rejected : accepted);
+                }
+            }
+        }
+    EXPECT_GT(rejected, 500);
+    EXPECT_GT(accepted, 500);
 }
 
 }  // namespace

@@ -18,10 +18,10 @@
 // 32-bit SIMD lanes; a block of a few samples is tested sample by sample), and the depth test in SIMD on
 // that run alone. Any other triangle, up to
 // coordinates of +-DBL_MAX, takes the wide path: where its coordinates lie within 2^(60-N) pixels and
-// differ by less than 2^(50-2N) (fixed8: 2^34), the same tiles and row walk in 64 bits from each tile's
-// edge values found exactly in 128-bit integers; otherwise the row walk itself in 128-bit integers
-// (coordinates within 2^(60-N) pixels) or big integers. Every way gives exactly the reference's coverage
-// of the snapped triangle.
+// differ by less than 2^(50-N) (fixed8: 2^42), the same tiles and row walk in 64 bits, in steps of a
+// pixel, from each tile's edge values found exactly in 128-bit integers; otherwise the row walk itself in
+// 128-bit integers (coordinates within 2^(60-N) pixels) or big integers. Every way gives exactly the
+// reference's coverage of the snapped triangle.
 //
 // Depth. z is the triangle's plane evaluated in double at the sample; the z-buffer decides the (z, id)
 // order exactly: a comparison the double values and their error bounds cannot settle is made in exact
