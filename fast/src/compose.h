@@ -22,7 +22,6 @@
 
 namespace rast::fast::detail {
 
-// Pixels [i0, i1] x [j0, j1] of the viewport: one tile.
 // Row r of block b: the samples the filtered test could not order get the exact (z, id) order, or the
 // injected bug.
 template <Fault F>

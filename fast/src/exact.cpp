@@ -350,7 +350,7 @@ void wide_spans(const Corners& v, int bits, const std::array<bool, 3>& inclusive
 std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                                                   std::span<const std::int64_t> sx, std::span<const std::int64_t> sy) {
     if (!fits_128(v, bits)) return std::nullopt;
-    const Int128 limit = Int128(1) << 50;
+    const Int128 limit = kWideStep;
     std::array<WideEdge, 3> out;
     const std::array<Edge<Int128>, 3> edges = edges_of<Int128>(scale_128(bits), v, inclusive);
     for (std::size_t k = 0; k < 3; ++k) {

@@ -76,6 +76,7 @@ struct WideEdge {
     std::int64_t a, b;
     Int128 c, least, greatest;
 };
+inline constexpr std::int64_t kWideStep = std::int64_t{1} << 50;  // |a| and |b| are below it
 
 inline Int128 offset_term(const WideEdge& f, int bits, std::int64_t sx, std::int64_t sy) {
     return (Int128{f.a} * sx + Int128{f.b} * sy + f.c) >> bits;  // an arithmetic shift: floor
@@ -83,8 +84,8 @@ inline Int128 offset_term(const WideEdge& f, int bits, std::int64_t sx, std::int
 
 // The edges of a counter-clockwise triangle whose corners are multiples of 2^-bits, for the sample offsets
 // (sx[k], sy[k]) in fixed units, where its coordinates lie within 2^(60 - bits) pixels and a and b are
-// below 2^50 (kWideStep, setup.h; its coordinates differ by less than 2^(50 - bits) pixels); otherwise
-// none, and the triangle keeps its spans.
+// below kWideStep (its coordinates differ by less than 2^(50 - bits) pixels); otherwise none, and the
+// triangle keeps its spans.
 std::optional<std::array<WideEdge, 3>> wide_edges(const Corners& v, int bits, const std::array<bool, 3>& inclusive,
                                                   std::span<const std::int64_t> sx, std::span<const std::int64_t> sy);
 

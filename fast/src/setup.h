@@ -98,16 +98,15 @@ inline std::int64_t greatest_over(const FixedEdge& f, const FixedRect& r) {
     return f.a * (f.a >= 0 ? r.x_hi : r.x_lo) + f.b * (f.b >= 0 ? r.y_hi : r.y_lo) + f.c;
 }
 
-// The pixels [i0, i1] x [j0, j1].
+// Pixels [i0, i1] x [j0, j1] of the viewport: one tile, or a part of one.
 struct TileRect {
     int i0, i1, j0, j1;
 };
 
-// A wide edge's steps per pixel are below kWideStep (wide_edges), so over a tile's samples, and the few
-// rows past them that row_masks walks, its value in pixel steps (WideEdge) changes by less than 2^58:
-// where that value at the tile's first sample is beyond +-kWideClamp, taking +-kWideClamp there instead
-// keeps its sign at every one of them, and every value and step stays within the fixed path's 2^61.
-inline constexpr std::int64_t kWideStep = std::int64_t{1} << 50;
+// A wide edge's steps per pixel are below kWideStep (exact.h), so over a tile's samples, and the few rows
+// past them that row_masks walks, its value in pixel steps (WideEdge) changes by less than 2^58: where
+// that value at the tile's first sample is beyond +-kWideClamp, taking +-kWideClamp there instead keeps
+// its sign at every one of them, and every value and step stays within the fixed path's 2^61.
 inline constexpr std::int64_t kWideClamp = std::int64_t{1} << 60;
 inline std::int64_t clamped(Int128 value) {
     return static_cast<std::int64_t>(std::clamp<Int128>(value, -kWideClamp, kWideClamp));

@@ -27,7 +27,7 @@ std::uint64_t expected_row(const RowEdges& e, int width, int r) {
 // An edge through a random point of the block (so that rows are partly covered), or parallel to the rows
 // or columns, or far from the block, with the fixed path's magnitudes (coefficients below 2^46: coordinate
 // differences below 2^30, times 2^16; values below 2^61) and the wide path's near edges' (coefficients
-// below 2^50, values at the first sample within 2^60: kWideStep and kWideClamp, coverage.h).
+// below 2^50, values at the first sample within 2^60: kWideStep and kWideClamp, exact.h and setup.h).
 void random_edge(std::mt19937_64& rng, int width, int rows, RowEdges& e, int k) {
     const auto magnitude = [&rng] {
         const int bits = std::uniform_int_distribution<int>(0, 50)(rng);
