@@ -208,17 +208,20 @@ void rasterize(const Setup& t, std::int32_t id, const TileRect& rect, TileBuffer
             const bool integer = partial && integer_edges_at(t, c, b, s, edges.q, edges.p, edges.step);
             if (integer && scalar) return integer_block_depth(edges, b, plane, rows, undecided);
             if (partial && t.p.path == Path::wide && !integer && wide.empty()) wide = tile.wide.of(t, c, j0, j1);
+            // The spans of the block's own rows: hidden bands trimmed off its top start it below j0.
+            const std::span<const Span> spans =
+                wide.empty() ? wide : wide.subspan(static_cast<std::size_t>(b.j0 - j0) * c.offsets.size());
             if (partial && t.p.path != Path::floating && !scalar) {
                 // Exact rows, one run each: walked from row to row from integer edges, or the wide path's
                 // spans where it has none; each trimmed to its subtiles (still one run).
                 if (integer) row_masks(edges, b.width, b.rows, masks);
-                else coverage_of<F>(t, c, b, s, wide, masks);
+                else coverage_of<F>(t, c, b, s, spans, masks);
                 if (trim.trimmed)
                     for (int r = 0; r < b.rows; ++r) masks[r] &= trim.keep[r];
                 return depth_runs(b, masks, plane, rows, undecided);
             }
             if (!partial && !scalar && trim.trimmed) return depth_runs(b, trim.keep, plane, rows, undecided);
-            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, wide, masks) : Coverage{};
+            const Coverage cov = partial ? coverage_of<F>(t, c, b, s, spans, masks) : Coverage{};
             return scalar ? depth_block_scalar(b, cov, plane, rows, undecided)
                           : depth_block(b, cov, plane, rows, undecided);
         },

@@ -225,7 +225,7 @@ TEST(Api, ARendererForgetsTheLastScenesTriangles) {
 TEST(Api, ARendererForgetsTheLastScenesWideSpans) {
     Renderer renderer;
     Framebuffer target;
-    const double r = 0x1p30;  // beyond the 64-bit path's range: the wide path
+    const double r = 0x1p45;  // beyond the 64-bit path's range and the near edges' (fixed8: 2^42): spans
     for (const int x : {70, 20}) {
         Scene scene;
         scene.viewport = {200, 60};

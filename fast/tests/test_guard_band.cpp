@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace rast::fast {
 namespace {
@@ -145,6 +148,25 @@ TEST(GuardBandFixed, WideSliverSkippingATileKeepsItsCoverage) {
         for (const auto& [i, j] : expected) EXPECT_FALSE(i >= 64 && i < 128 && j < 64) << name(p) << " " << i << "," << j;
         EXPECT_EQ(rendered_pixels(sliver, vp, p), expected) << name(p);
     }
+}
+
+// A wide triangle too large for near edges (its sides beyond 2^42 pixels in fixed8: it walks spans), behind
+// a big near one that covers the top bands of subtiles of the tile at x = 64: hierarchical z trims those
+// rows off the far one's block there, which then starts below the tile's first row, and must read the
+// spans of its own rows (456 samples were another row's). Each sample holds the near triangle where it
+// covers it, else the far one where that covers it, as each alone covers (covered_samples, no tiles).
+TEST(GuardBandFixed, SpansOfAWideTrianglesTrimmedBlockAreItsOwnRows) {
+    Scene scene;
+    scene.viewport = {128, 64};
+    const double r = 0x1p45;
+    scene.triangles = {tri(-1000, -10, 1000, -10, 0, 40, 0.1),
+                       tri(96 - r / 2, 32 - r, 0x1p46, 32, 96 + r / 2, 32 + r, 0.9)};
+    const Framebuffer fb = render(scene, {Precision::fixed8, 1});
+    std::vector<std::int32_t> expected(fb.ids.size(), Framebuffer::kNoTriangle);
+    for (const std::size_t k : covered_samples(scene.triangles[1], scene.viewport, 1)) expected[k] = 1;
+    for (const std::size_t k : covered_samples(scene.triangles[0], scene.viewport, 1)) expected[k] = 0;
+    EXPECT_GT(std::count(expected.begin(), expected.end(), 1), 500);  // the far one shows below the near one
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), fb.ids.begin(), fb.ids.end()));
 }
 
 }  // namespace
