@@ -83,23 +83,19 @@ inline void fixed_row_masks(const std::array<FixedEdge, 3>& edges, const Context
 }
 
 // How the kernels find the samples of block b (sample index s) that t covers; the paths that compute
-// row masks here leave them in `masks`, one per row of the block. wide: on the wide path, t's spans of
-// the block's rows (spans_of, from row b.j0).
+// row masks here leave them in `masks`, one per row of the block. wide: on the wide path without near
+// edges, t's spans of the block's rows (spans_of, from row b.j0).
 template <Fault F>
 Coverage coverage_of(const Setup& t, const Context& c, const Block& b, int s, std::span<const Span> wide,
                      std::uint64_t* masks) {
     Coverage cov;
+    if (integer_edges_at(t, c, b, s, cov.e, cov.dx, cov.dy)) {
+        cov.kind = Coverage::Kind::fixed;
+        return cov;
+    }
     switch (t.p.path) {
-        case Path::fixed:
-            cov.kind = Coverage::Kind::fixed;
-            fixed_edges_at(t.fixed, c, b, s, cov.e, cov.dx, cov.dy);
-            return cov;
+        case Path::fixed: return cov;  // integer edges, above
         case Path::wide: {
-            if (t.near) {
-                cov.kind = Coverage::Kind::fixed;
-                wide_edges_at(*t.near, c, b, s, cov.e, cov.dx, cov.dy);
-                return cov;
-            }
             const std::size_t samples = c.offsets.size();
             for (int r = 0; r < b.rows; ++r) {
                 const Span& span = wide[static_cast<std::size_t>(r) * samples + s];
