@@ -69,7 +69,7 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
     // A tile no triangle reaches is written empty straight into the framebuffer, where its pixels' samples
     // are contiguous row by row: clearing the tile buffer and copying it out moves its bytes twice more
     // (2.5 ms for a 1024 x 1024 screen on one thread, half the time of a mesh that leaves most tiles empty).
-    // Its rows are copied from kEmptyRow by copy_out, streamed as every other tile's (filled by ordinary
+    // Its rows are copied from kEmptyRow by copy_out, streamed as a one-sample tile's (filled by ordinary
     // stores, each line of the framebuffer was read first: an empty 1024 x 1024 frame took 1.03 ms, now
     // 0.65 ms, on an Intel Xeon VM).
     const bool empty = occluders.empty() && std::all_of(chunks.begin(), chunks.end(), [index](const Chunk& chunk) {
@@ -197,14 +197,14 @@ void render_scene(const Scene& scene, const Options& options, Framebuffer& fb, W
     }
     tbb::task_arena& arena = *ws.arena;
     // Contiguous id ranges, binned in parallel; every tile visits them in order, so it still composes
-    // its triangles in id order (the occluders aside), whatever the number of chunks. Binning sets up
-    // the big triangles, so a scene of a few thousand of them already needs it shared out: rast bench's
-    // 2000 huge ones (wide path, exact spans) spend half their instructions there. The count is a
-    // multiple of the workers, so that chunks of equal size share out evenly (2000 huge triangles in 7
-    // chunks kept one of two threads binning 4/7 of the time): one per worker, up to four where each
-    // still gets kChunkTriangles. A chunk costs about 10^5 instructions of its own (a bin per tile,
-    // merged per tile), which the bunny's 3674 triangles in 8 chunks did not earn back. A scene too
-    // small to give every worker kMinChunkTriangles is binned in as many chunks as it fills.
+    // its triangles in id order (the occluders aside), whatever the number of chunks. Binning is about a
+    // quarter of a tiny triangle's instructions (scripts/stage-budget) and sets up the big triangles, so
+    // it is shared out. The count is a multiple of the workers, so that chunks of equal size share out
+    // evenly (2000 big triangles in 7 chunks once kept one of two threads binning 4/7 of the time, while
+    // their setup was half their instructions): one per worker, up to four where each still gets
+    // kChunkTriangles. A chunk costs about 10^5 instructions of its own (a bin per tile, merged per tile),
+    // which the bunny's 3674 triangles in 8 chunks did not earn back. A scene too small to give every
+    // worker kMinChunkTriangles is binned in as many chunks as it fills.
     const std::size_t n = scene.triangles.size();
     constexpr std::size_t kChunkTriangles = 1024, kMinChunkTriangles = 128;
     const std::size_t workers = static_cast<std::size_t>(arena.max_concurrency());

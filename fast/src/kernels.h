@@ -82,7 +82,8 @@ struct SmallEdges {
 };
 
 // Integer edge functions along the sample rows of a block, E_k = p[k] i + q[k] at column i, q[k] growing
-// by step[k] from row to row: RowSpans' inputs (spans.h), for the fixed path, whose values fit in 64 bits.
+// by step[k] from row to row: RowSpans' inputs (spans.h), for the fixed path and the wide path's near edges
+// (clamped: setup.h), whose values fit in 64 bits.
 struct RowEdges {
     std::int64_t p[3], q[3], step[3];
 };

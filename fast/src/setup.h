@@ -103,11 +103,14 @@ struct TileRect {
     int i0, i1, j0, j1;
 };
 
-// A wide edge's steps per pixel are below kWideStep (exact.h), so over a tile's samples, and the few rows
-// past them that row_masks walks, its value in pixel steps (WideEdge) changes by less than 2^58: where
-// that value at the tile's first sample is beyond +-kWideClamp, taking +-kWideClamp there instead keeps
-// its sign at every one of them, and every value and step stays within the fixed path's 2^61.
+// A wide edge's steps per pixel are below kWideStep (exact.h). A block's samples, and what the kernels
+// compute past them (row_masks' rows below the block, the column kernel's vector past its last column, the
+// covered subtiles' steps), lie within 4 kTile pixel steps of its first sample, over which the edge's value
+// in pixel steps (WideEdge) changes by less than 2^58: where that value at the first sample is beyond
+// +-kWideClamp, taking +-kWideClamp there instead keeps its sign at every one of them, and every value and
+// step stays within the fixed path's 2^61.
 inline constexpr std::int64_t kWideClamp = std::int64_t{1} << 60;
+static_assert(4 * kTile * kWideStep <= kWideClamp / 4);
 inline std::int64_t clamped(Int128 value) {
     return static_cast<std::int64_t>(std::clamp<Int128>(value, -kWideClamp, kWideClamp));
 }

@@ -225,10 +225,10 @@ inline std::uint64_t in_front_subtiles(const Plane& p, const Context& c, const T
     return open_subtiles(test, tile.subtile_far);
 }
 
-// After big triangle t (the fixed path's or the float modes' with a whole-tile margin) was composed into
-// the tile whose corner is pixel (ti, tj), over pixels [i0, i1] x [j0, j1] of its box: the whole subtiles
-// there whose samples it all covers take their far depth from its plane (lower_covered_subtiles), and the
-// tile's far depth the largest of its subtiles'.
+// After big triangle t (the fixed path's, the wide path's with near edges, or the float modes' with a
+// whole-tile margin) was composed into the tile whose corner is pixel (ti, tj), over pixels [i0, i1] x
+// [j0, j1] of its box: the whole subtiles there whose samples it all covers take their far depth from its
+// plane (lower_covered_subtiles), and the tile's far depth the largest of its subtiles'.
 // A far depth f must keep every exact depth stored under it at most f + stored_err (behind_tile). At
 // each such sample the (z, id) order left a depth no farther than the plane's exact one, which is within
 // err of its double one, and the tile admitted err (stored_err >= err); rounding is monotone, so the
