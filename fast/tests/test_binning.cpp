@@ -6,9 +6,9 @@
 // down to one tile and below the small lane's 32 pixels, with a depth or coordinate that is not finite at
 // a random place in some.
 #include "binning.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <bit>
 #include <cmath>
@@ -20,6 +20,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 std::vector<Triangle> random_scene(std::mt19937_64& rng, const Context& c, std::size_t n) {
     std::uniform_real_distribution<double> unit(0, 1), signed_unit(-1, 1);
@@ -93,9 +95,7 @@ void expect_same_bins(const Chunk& got, const Chunk& want, const std::string& wh
 }
 
 TEST(Binning, EightAtATimeEqualsOneAtATime) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261127);
         std::size_t small_from_undecided = 0, undecided_lanes = 0;
         for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
@@ -130,9 +130,8 @@ TEST(Binning, EightAtATimeEqualsOneAtATime) {
                         }
                     }
                 }
-        hwy::SetSupportedTargetsForTest(0);
         EXPECT_GT(small_from_undecided, 100u) << undecided_lanes;
-    }
+    });
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 // whole-buffer kernels.
 #include "kernels.h"
 #include "scalar.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +21,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 // A tile's rows with a vector of padding, as TileBuffer keeps them; the block's first sample at column
 // `origin` of the first row. At the right edge (origin + width = kStride) a kernel's reads past a block row
@@ -193,9 +195,7 @@ void expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage& c
 }
 
 TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261124);
         int undecided_blocks = 0, written_blocks = 0;
         for (int trial = 0; trial < 2000; ++trial) {
@@ -231,11 +231,10 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
                                      outcome);
                 if (HasFatalFailure()) return;
             }
-        hwy::SetSupportedTargetsForTest(0);
         // The cases are not all trivial: many blocks write, many leave samples to the exact comparison.
         EXPECT_GT(written_blocks, 1500) << undecided_blocks;
         EXPECT_GT(undecided_blocks, 1500) << written_blocks;
-    }
+    });
 }
 
 // The run kernel against depth_small on each of its entries in turn: a run of up to eight blocks of a
@@ -244,9 +243,7 @@ TEST(DepthKernels, EqualTheScalarDepthTestOnEveryTarget) {
 // entry with the same undecided rows, and leaves the tile's depths, bounds and ids the same; a call from
 // the entry after it goes on. Each entry's margin takes the call's stored_err, not a bound of its own.
 TEST(DepthKernels, SmallRunEqualsDepthSmallEntryByEntryOnEveryTarget) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         const DepthSmallRunKernel run_kernel = depth_small_run_kernel();
         std::mt19937_64 rng(20261128);
         int stops = 0, later_entries_tested = 0;
@@ -300,11 +297,10 @@ TEST(DepthKernels, SmallRunEqualsDepthSmallEntryByEntryOnEveryTarget) {
                 first = stop + 1;
             }
         }
-        hwy::SetSupportedTargetsForTest(0);
         // The runs stop, and go on after a stop.
         EXPECT_GT(stops, 200) << later_entries_tested;
         EXPECT_GT(later_entries_tested, 100) << stops;
-    }
+    });
 }
 
 // The decision itself, by hand: stored depths z' = z + f (err + err') around the plane's z, for a block
@@ -347,9 +343,7 @@ TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
             Rows scalar = start;
             EXPECT_TRUE(depth_block_scalar(b, Coverage{}, p, scalar.view(), open));
             expect_decisions(scalar, open, "scalar");
-            for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-                hwy::SetSupportedTargetsForTest(target);
-                SCOPED_TRACE(hwy::TargetName(target));
+            on_every_target([&] {
                 Rows block = start, runs = start, lanes = start;
                 EXPECT_TRUE(depth_block(b, Coverage{}, p, block.view(), poisoned(open)));
                 expect_decisions(block, open, "depth_block");
@@ -360,8 +354,7 @@ TEST(DepthKernels, DecideExactlyTheGapsBeyondTheMargin) {
                 const SmallEdges inside{{1, 1, 1}, {0, 0, 0}, {0, 0, 0}};
                 EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), poisoned(open)));
                 expect_decisions(lanes, open, "depth_small");
-            }
-            hwy::SetSupportedTargetsForTest(0);
+            });
         }
     }
 }
@@ -402,9 +395,7 @@ TEST(DepthKernels, LeaveEverySampleOfAnInfiniteBoundUndecided) {
             Rows scalar = start;
             EXPECT_TRUE(depth_block_scalar(b, masks, p, scalar.view(), open));
             expect_nothing_decided(scalar, open, "scalar");
-            for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-                hwy::SetSupportedTargetsForTest(target);
-                SCOPED_TRACE(hwy::TargetName(target));
+            on_every_target([&] {
                 Rows runs = start, lanes = start;
                 EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
                 expect_nothing_decided(runs, open, "depth_runs");
@@ -412,8 +403,7 @@ TEST(DepthKernels, LeaveEverySampleOfAnInfiniteBoundUndecided) {
                 const SmallEdges from_column{{0, 1, 1}, {1, 0, 0}, {-1, 0, 0}};
                 EXPECT_TRUE(depth_small(b, from_column, p, lanes.view(), poisoned(open)));
                 expect_nothing_decided(lanes, open, "depth_small");
-            }
-            hwy::SetSupportedTargetsForTest(0);
+            });
         }
 }
 
@@ -436,9 +426,7 @@ TEST(DepthKernels, LeaveTheGapsOfAnOverflowingMarginUndecided) {
                 start.ids[at] = 100 + k;
             }
         std::uint64_t open[kRowLanes];
-        for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-            hwy::SetSupportedTargetsForTest(target);
-            SCOPED_TRACE(hwy::TargetName(target));
+        on_every_target([&] {
             Rows runs = start, lanes = start;
             EXPECT_TRUE(depth_runs(b, covered, p, runs.view(), poisoned(open)));
             EXPECT_EQ(runs.ids, start.ids);
@@ -447,8 +435,7 @@ TEST(DepthKernels, LeaveTheGapsOfAnOverflowingMarginUndecided) {
             EXPECT_TRUE(depth_small(b, inside, p, lanes.view(), poisoned(open)));
             EXPECT_EQ(lanes.ids, start.ids);
             for (int r = 0; r < b.rows; ++r) EXPECT_EQ(open[r], covered[r]) << "depth_small, row " << r;
-        }
-        hwy::SetSupportedTargetsForTest(0);
+        });
         Rows scalar = start;
         EXPECT_TRUE(depth_block_scalar(b, Coverage{}, p, scalar.view(), open));
         EXPECT_EQ(scalar.ids, start.ids);
@@ -460,9 +447,7 @@ TEST(DepthKernels, LeaveTheGapsOfAnOverflowingMarginUndecided) {
 // +infinity over exactly [0, n), farthest answers the largest value (+infinity where a slot is empty).
 TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
     constexpr double kInf = std::numeric_limits<double>::infinity(), kUntouched = 7.5;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261127);
         for (std::size_t offset = 0; offset < 4; ++offset)
             for (std::size_t n = 0; n <= 40; ++n) {
@@ -479,8 +464,7 @@ TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
                 z[offset + rng() % n] = kInf;
                 EXPECT_EQ(farthest(z.data() + offset, n), kInf) << n << " from " << offset;
             }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 // farthest_subtiles answers each subtile column's largest depth over exactly its rows and columns: every
@@ -490,9 +474,7 @@ TEST(DepthKernels, FillFarAndFarthestCoverExactlyTheirRangeOnEveryTarget) {
 TEST(DepthKernels, FarthestSubtilesTakesEachSubtilesLargestOnEveryTarget) {
     constexpr double kInf = std::numeric_limits<double>::infinity(), kOutside = 10, kUnwritten = -5;
     constexpr int kStride = 64;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261127);
         std::uniform_real_distribution<double> depth(-1, 1);
         for (int width = 1; width <= kStride; ++width)
@@ -517,8 +499,7 @@ TEST(DepthKernels, FarthestSubtilesTakesEachSubtilesLargestOnEveryTarget) {
                 for (int k = 0; k < subtiles; ++k)
                     ASSERT_EQ(far[k], k == empty ? kInf : 2 + k) << width << " x " << rows << ", subtile " << k;
             }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 // The kernels a render resolves once (Context::depth_small, Context::depth_small_run) are the selected
@@ -526,12 +507,10 @@ TEST(DepthKernels, FarthestSubtilesTakesEachSubtilesLargestOnEveryTarget) {
 TEST(DepthKernels, SmallKernelsAreTheSelectedTargets) {
     std::set<DepthSmallKernel> kernels;
     std::set<DepthSmallRunKernel> run_kernels;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        EXPECT_TRUE(kernels.insert(depth_small_kernel()).second) << hwy::TargetName(target);
-        EXPECT_TRUE(run_kernels.insert(depth_small_run_kernel()).second) << hwy::TargetName(target);
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    on_every_target([&] {
+        EXPECT_TRUE(kernels.insert(depth_small_kernel()).second);
+        EXPECT_TRUE(run_kernels.insert(depth_small_run_kernel()).second);
+    });
 }
 
 // The first element of `values` at the start of a cache line (within its first 64 bytes).
@@ -547,9 +526,7 @@ T* line_start(T* values) {
 TEST(DepthKernels, CopyOutWritesExactlyTheTileRowsOnEveryTarget) {
     constexpr double kUntouched = 7.5;
     constexpr std::int32_t kUntouchedId = -7;
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         for (int width = 0; width <= 40; ++width)
             for (int rows = 1; rows <= 3; ++rows) {
                 const std::ptrdiff_t stride = width + 3, to_stride = width + 5;
@@ -580,8 +557,7 @@ TEST(DepthKernels, CopyOutWritesExactlyTheTileRowsOnEveryTarget) {
                     }
                 }
             }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 }  // namespace

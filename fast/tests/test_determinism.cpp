@@ -1,5 +1,6 @@
 // The framebuffer does not depend on the thread count or on the SIMD target Highway dispatches to.
 #include "pixels.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
@@ -9,6 +10,8 @@
 
 namespace rast::fast {
 namespace {
+
+using testing::on_every_target;
 
 // Many overlapping triangles of all sizes, with some shared edges and equal depths, so that tiles,
 // trivial accept / reject, the filtered depth test and its exact fallback all take part.
@@ -50,14 +53,8 @@ TEST_P(Determinism, ThreadCounts) {
 TEST_P(Determinism, SimdTargets) {
     const Scene scene = random_scene(4);
     const Framebuffer baseline = render(scene, {GetParam(), 2});
-    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
-    EXPECT_GE(targets.size(), 2u) << "expected at least one SIMD target besides the fallback";
-    for (const std::int64_t target : targets) {
-        hwy::SetSupportedTargetsForTest(target);
-        const bool same = identical(baseline, render(scene, {GetParam(), 2}));
-        hwy::SetSupportedTargetsForTest(0);
-        EXPECT_TRUE(same) << hwy::TargetName(target);
-    }
+    EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "expected at least one SIMD target besides the fallback";
+    on_every_target([&] { EXPECT_TRUE(identical(baseline, render(scene, {GetParam(), 2}))); });
 }
 
 INSTANTIATE_TEST_SUITE_P(AllModes, Determinism, ::testing::ValuesIn(testing::kAllPrecisions),

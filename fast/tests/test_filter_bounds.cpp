@@ -6,12 +6,12 @@
 #include "engine.h"
 #include "line_depth.h"
 #include "setup.h"
+#include "targets.h"
 
 #include <rast/fast_faults.h>
 #include <rast/filters/adversary.h>
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <algorithm>
 #include <array>
@@ -35,6 +35,7 @@ using filters::testing::ratio;
 using filters::testing::Rational;
 using filters::testing::Without;
 using filters::testing::worst;
+using testing::on_every_target;
 
 // --- The depth plane ------------------------------------------------------------------------------
 
@@ -147,8 +148,7 @@ TEST(PlaneBound, SmallPlanesAreSoundOnEveryTarget) {
             records.push_back(record);
     }
     ASSERT_GT(records.size(), plane_cases().size() / 2);
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
+    on_every_target([&] {
         double largest = 0;
         for (const SmallFixed& record : records) {
             Plane plane;
@@ -156,10 +156,9 @@ TEST(PlaneBound, SmallPlanesAreSoundOnEveryTarget) {
             small_planes({&record, 1}, c, &plane, batch);
             largest = std::max(largest, plane_ratio(plane, placed_of(record, c)));
         }
-        hwy::SetSupportedTargetsForTest(0);
-        EXPECT_LE(largest, 1.0) << hwy::TargetName(target);
-        EXPECT_GT(largest, 0.5) << hwy::TargetName(target);
-    }
+        EXPECT_LE(largest, 1.0);
+        EXPECT_GT(largest, 0.5);
+    });
 }
 
 // The depth test compares two planes' depths against the sum of their bounds: for a halved bound to change

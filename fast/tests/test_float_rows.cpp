@@ -4,9 +4,9 @@
 // rounds x to fewer distinct values than there are columns, and magnitudes whose products overflow.
 #include "kernels.h"
 #include "scalar.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <cmath>
 #include <cstdint>
@@ -14,6 +14,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 // A block of random size; its corner near the origin, near float32's last odd integers or beyond 2^20,
 // where (i + sx) rounds in float32, or negative; sample offsets in sixteenths.
@@ -49,8 +51,7 @@ void random_edge(std::mt19937_64& rng, const Block& b, bool single, Coverage& c,
 }
 
 TEST(FloatRowMasks, EqualTheFloatEdgesAtEverySampleOnEveryTarget) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
+    on_every_target([&] {
         std::mt19937_64 rng(20261128);
         int partly_covered = 0, ties = 0;
         for (int trial = 0; trial < 20000; ++trial) {
@@ -69,7 +70,7 @@ TEST(FloatRowMasks, EqualTheFloatEdgesAtEverySampleOnEveryTarget) {
             float_row_masks(c, b, masks);
             for (int r = 0; r < b.rows; ++r) {
                 const std::uint64_t expected = row_coverage(b, c, r);
-                ASSERT_EQ(masks[r], expected) << hwy::TargetName(target) << " trial " << trial << " row " << r;
+                ASSERT_EQ(masks[r], expected) << "trial " << trial << " row " << r;
                 partly_covered += expected != 0 && expected != first_bits(b.width);
                 const double y = double(b.j0 + r) + b.sy;
                 for (int k = 0; k < 3 && single; ++k) {
@@ -78,10 +79,9 @@ TEST(FloatRowMasks, EqualTheFloatEdgesAtEverySampleOnEveryTarget) {
                 }
             }
         }
-        hwy::SetSupportedTargetsForTest(0);
-        EXPECT_GT(partly_covered, 50000) << hwy::TargetName(target);  // the cases are not all trivial
-        EXPECT_GT(ties, 1000) << hwy::TargetName(target);             // samples on an edge decided by its rule
-    }
+        EXPECT_GT(partly_covered, 50000);  // the cases are not all trivial
+        EXPECT_GT(ties, 1000);             // samples on an edge decided by its rule
+    });
 }
 
 }  // namespace

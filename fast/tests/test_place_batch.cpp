@@ -7,9 +7,9 @@
 // product's terms pass 2^53 (undecided lanes: test_binning.cpp checks what becomes of them), slivers
 // whose cross product is +-1 between terms near 2^56, and extents either side of narrow_edges' limit.
 #include "binning.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <bit>
 #include <cmath>
@@ -22,6 +22,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 Vertex random_vertex(std::mt19937_64& rng, const Context& c, double cx, double cy, double reach) {
     std::uniform_real_distribution<double> offset(-reach, reach), depth(-1, 1);
@@ -130,9 +132,7 @@ void expect_same_record(const SmallFixed& got, const SmallFixed& want, const std
 }
 
 TEST(PlaceBatch, EqualsPlaceSmallFixedOnEveryTarget) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261127);
         int verdicts[4] = {};  // small, culled, general, undecided
         for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
@@ -172,11 +172,10 @@ TEST(PlaceBatch, EqualsPlaceSmallFixedOnEveryTarget) {
                     }
                 }
             }
-        hwy::SetSupportedTargetsForTest(0);
         // Every verdict is met often.
         for (const int count : verdicts)
             EXPECT_GT(count, 1000) << verdicts[0] << " " << verdicts[1] << " " << verdicts[2] << " " << verdicts[3];
-    }
+    });
 }
 
 }  // namespace

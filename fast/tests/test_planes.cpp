@@ -7,10 +7,10 @@
 // own records in every fixed mode, and placed ones of every path, with depths of every magnitude and sign,
 // flat planes and near-degenerate corners.
 #include "setup.h"
+#include "targets.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <algorithm>
 #include <array>
@@ -25,6 +25,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 // The three depths of a triangle, from one of the families where rounding is hardest on the bound:
 // independent magnitudes from subnormal to huge, one value (a flat plane), values a few units in the last
@@ -136,9 +138,7 @@ TEST(SmallPlanes, AreTheScalarNarrowPlanesOnEveryTarget) {
             if (place_small_fixed<Fault::none>(random_small_triangle(rng, side), 0, c, record) == Lane::small_fixed)
                 records.push_back(record);
         }
-        for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-            hwy::SetSupportedTargetsForTest(target);
-            SCOPED_TRACE(hwy::TargetName(target));
+        on_every_target([&] {
             int narrow_count = 0, wide_count = 0;
             for (std::size_t first = 0, n = 1; first < records.size(); first += n, n = n % kPlaneBatch + 1) {
                 n = std::min(n, records.size() - first);
@@ -163,21 +163,17 @@ TEST(SmallPlanes, AreTheScalarNarrowPlanesOnEveryTarget) {
                     EXPECT_EQ(bits(got.err), bits(want.err));
                     EXPECT_LE(got.err, general.err);
                     if (got.err < std::numeric_limits<double>::infinity()) expect_bounded_over_box(rng, got, p, c);
-                    if (::testing::Test::HasFailure()) {
-                        hwy::SetSupportedTargetsForTest(0);
-                        return;
-                    }
+                    if (::testing::Test::HasFailure()) return;
                     narrow_count += narrow[k];
                     wide_count += !narrow[k];
                 }
             }
-            hwy::SetSupportedTargetsForTest(0);
             // The generator does make narrow small triangles in every mode, and others in fixed16.
             EXPECT_GT(narrow_count, 1000);
             if (precision == Precision::fixed16) {
                 EXPECT_GT(wide_count, 1000);
             }
-        }
+        });
     }
 }
 

@@ -2,15 +2,17 @@
 // sample in 128-bit integers, on each SIMD target (its rows are walked as many at a time as it has
 // 64-bit lanes).
 #include "kernels.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <cstdint>
 #include <random>
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 // Bit i of row r: whether p[k] i + q[k] + r step[k] >= 0 for all three edges.
 std::uint64_t expected_row(const RowEdges& e, int width, int r) {
@@ -47,8 +49,7 @@ void random_edge(std::mt19937_64& rng, int width, int rows, RowEdges& e, int k) 
 }
 
 TEST(RowMasks, EqualTheEdgeFunctionsAtEverySampleOnEveryTarget) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
+    on_every_target([&] {
         std::mt19937_64 rng(20261124);
         int partly_covered = 0;
         for (int trial = 0; trial < 20000; ++trial) {
@@ -60,13 +61,12 @@ TEST(RowMasks, EqualTheEdgeFunctionsAtEverySampleOnEveryTarget) {
             row_masks(edges, width, rows, masks);
             for (int r = 0; r < rows; ++r) {
                 const std::uint64_t expected = expected_row(edges, width, r);
-                ASSERT_EQ(masks[r], expected) << hwy::TargetName(target) << " trial " << trial << " row " << r;
+                ASSERT_EQ(masks[r], expected) << "trial " << trial << " row " << r;
                 partly_covered += expected != 0 && expected != first_bits(width);
             }
         }
-        hwy::SetSupportedTargetsForTest(0);
-        EXPECT_GT(partly_covered, 100000) << hwy::TargetName(target);  // the cases are not all trivial
-    }
+        EXPECT_GT(partly_covered, 100000);  // the cases are not all trivial
+    });
 }
 
 }  // namespace

@@ -7,9 +7,9 @@
 // decides; triangles straddle the tile's sides, and blocks from 1 x 9 to 9 x 9 pixels sit either side of
 // the stamp's limits.
 #include "compose.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -19,6 +19,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 // A triangle near the tile, its corners often on sample positions or sharing a row.
 Triangle random_triangle(std::mt19937_64& rng, const Context& c, const TileRect& rect) {
@@ -49,9 +51,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
         TileRect rect;
     };
     const Where places[] = {{{256, 256}, {64, 127, 64, 127}}, {{8128, 8128}, {8064, 8127, 8064, 8127}}};
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261127);
         int stamped = 0, refused = 0, on_edge = 0;
         int at_once = 0, one_at_a_time = 0;  // runs whose stamps stamp_masks finds either way (stamps_at_once)
@@ -134,7 +134,6 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
                         if (count > 0) ++(stamps_at_once(widest, tallest, count, rows_each) ? at_once : one_at_a_time);
                     }
                 }
-        hwy::SetSupportedTargetsForTest(0);
         // Both outcomes are common, and many samples lie on an edge or beside it (E = 0 or -1, the bias
         // included).
         EXPECT_GT(stamped, 3000) << refused;
@@ -143,7 +142,7 @@ TEST(Stamps, EqualTheScalarCoverageOnEveryTarget) {
         // Both ways of finding a run's masks are held to the definition.
         EXPECT_GT(at_once, 500) << one_at_a_time;
         EXPECT_GT(one_at_a_time, 500) << at_once;
-    }
+    });
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 // those a big triangle's covered subtiles take from its plane: cover_subtiles), and which triangles test
 // them (fills_box).
 #include "compose.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +19,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -49,9 +51,7 @@ std::uint64_t open_by_corners(const SubtileTest& t, const double* far) {
 // few margins of the plane's depth at the tile's centre (some +infinity): every target agrees with the
 // definition bit for bit, and both outcomes come up often.
 TEST(Subtiles, OpenSubtilesIsTheCornerTestOnEveryTarget) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         std::mt19937_64 rng(20261127);
         std::uniform_real_distribution<double> unit(-1, 1);
         long open_seen = 0, hidden_seen = 0;
@@ -76,8 +76,7 @@ TEST(Subtiles, OpenSubtilesIsTheCornerTestOnEveryTarget) {
         }
         EXPECT_GT(open_seen, 2000);
         EXPECT_GT(hidden_seen, 2000);
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 // By hand, one sample at each pixel's centre, margin 0.25, a box of the whole tile at (0, 0) unless said.
@@ -89,9 +88,7 @@ SubtileTest centred(double z0, double a, double x0, int i0, int i1, int j0, int 
 // the margin, which decides nothing; +infinity (an empty sample) never hides. Only the box's subtiles
 // answer.
 TEST(Subtiles, OpenSubtilesDecidesOnlyBeyondTheMargin) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         double far[kSubtiles * kSubtiles];
         std::fill(std::begin(far), std::end(far), 0.0);
         far[0] = 0.5;
@@ -103,25 +100,21 @@ TEST(Subtiles, OpenSubtilesDecidesOnlyBeyondTheMargin) {
         EXPECT_EQ(open_subtiles(centred(0.75, 0, 0, 8, 23, 0, 7), far), 0b100u);
         // Rows 8 to 15: the second band, all at 0.
         EXPECT_EQ(open_subtiles(centred(0.75, 0, 0, 0, 63, 8, 15), far), 0u);
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 // A slope along x, far depths all 0, over the first band: with a = 1/64 and x0 = 0.5 the nearest sample
 // of subtile bx is its first, at depth bx / 8, open while bx / 8 <= 0.25 (bx <= 2); with a = -1/64 and
 // x0 = 63.5 it is its last, at (7 - bx) / 8, open from bx = 5. Taking the other corner turns both round.
 TEST(Subtiles, OpenSubtilesTakesEachSubtilesNearestCorner) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        SCOPED_TRACE(hwy::TargetName(target));
+    on_every_target([&] {
         double far[kSubtiles * kSubtiles];
         std::fill(std::begin(far), std::end(far), 0.0);
         EXPECT_EQ(open_subtiles(centred(0, 1.0 / 64, 0.5, 0, 63, 0, 7), far), 0b00000111u);
         EXPECT_EQ(open_subtiles(centred(0, -1.0 / 64, 63.5, 0, 63, 0, 7), far), 0b11100000u);
         // A box from column 12: subtile 1's part starts there, at depth 11.5 / 64 < 0.25: still open.
         EXPECT_EQ(open_subtiles(centred(0, 1.0 / 64, 0.5, 12, 63, 0, 7), far), 0b00000110u);
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 // The rows a big triangle's subtiles leave, by hand, in the tile at (64, 128) over the box of pixels
@@ -265,10 +258,8 @@ TEST(Subtiles, CoveredSubtilesFarDepthsBoundWhatTheyHoldOnEveryTarget) {
                                 {Precision::float32, 128, Path::floating},
                                 {Precision::float64, 128, Path::floating},
                                 {Precision::fixed8, 1 << 22, Path::wide}};
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    on_every_target([&] {
         for (const auto [precision, side, path] : variants) {
-            hwy::SetSupportedTargetsForTest(target);
-            SCOPED_TRACE(hwy::TargetName(target));
             SCOPED_TRACE(static_cast<int>(precision));
             SCOPED_TRACE(side);
             long lowered = 0, checked = 0;
@@ -336,8 +327,7 @@ TEST(Subtiles, CoveredSubtilesFarDepthsBoundWhatTheyHoldOnEveryTarget) {
             EXPECT_GT(checked, 100);
             EXPECT_GT(lowered, 2000);
         }
-    }
-    hwy::SetSupportedTargetsForTest(0);
+    });
 }
 
 // Which triangles test subtiles: one covering an eighth of its bounding box or more. A right triangle

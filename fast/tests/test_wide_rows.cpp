@@ -1,15 +1,16 @@
 // The wide path's near edges (wide_edges): a block's rows walked in 64 bits from the edges' exact values
-// at its first sample, clamped (wide_edges_at, then row_masks or the scalar rows), against the spans they
-// stand for (wide_spans, walked in 128-bit integers from the triangle's first row), on blocks anywhere in
-// the largest viewport: along the edges, where edges through samples make ties, and far from them, where
-// the edges' values are beyond 64 bits and the clamp alone keeps their signs. And which triangles have
-// near edges: those whose coordinate differences are all below 2^(50 - bits) pixels.
+// at its first sample, clamped (wide_edges_at, then row_masks, the scalar rows or coverage_block's SIMD
+// evaluation), against the spans they stand for (wide_spans, walked in 128-bit integers from the
+// triangle's first row), on blocks anywhere in the largest viewport: along the edges, where edges through
+// samples make ties, and far from them, where the edges' values are beyond 64 bits and the clamp alone
+// keeps their signs. And which triangles have near edges: those whose coordinate differences are all below
+// 2^(50 - bits) pixels.
 #include "coverage.h"
 #include "scalar.h"
 #include "setup.h"
+#include "targets.h"
 
 #include <gtest/gtest.h>
-#include <hwy/targets.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,8 @@
 
 namespace rast::fast::detail {
 namespace {
+
+using testing::on_every_target;
 
 constexpr int kSide = 1 << 24;  // the largest viewport's
 
@@ -55,16 +58,8 @@ Block random_block(std::mt19937_64& rng, const Context& c, const Corners& v, int
     return {i0, j0, width, rows, c.offsets[static_cast<std::size_t>(s)].x, c.offsets[static_cast<std::size_t>(s)].y};
 }
 
-// Every target again at the end of a scope, whether or not an assertion left it early: a test run after
-// one that failed here would otherwise see one target only.
-struct EveryTargetAfter {
-    ~EveryTargetAfter() { hwy::SetSupportedTargetsForTest(0); }
-};
-
 TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
-    for (const std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-        const EveryTargetAfter reset;
-        hwy::SetSupportedTargetsForTest(target);
+    on_every_target([&] {
         std::mt19937_64 rng(20261129);
         int partly_covered = 0, clamped = 0, beyond_64_bits = 0, without = 0;
         for (const Precision precision : {Precision::fixed4, Precision::fixed8, Precision::fixed16})
@@ -93,8 +88,16 @@ TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
                         const Block b = random_block(rng, c, v, s);
                         RowEdges edges;
                         wide_edges_at(*near, c, b, s, edges.q, edges.p, edges.step);
-                        std::uint64_t masks[kRowLanes];
+                        std::uint64_t masks[kRowLanes], evaluated[kRowLanes];
                         row_masks(edges, b.width, b.rows, masks);
+                        // The same edges evaluated sample by sample (coverage_block, covered_samples' way).
+                        Coverage cov{.kind = Coverage::Kind::fixed};
+                        for (int k = 0; k < 3; ++k) {
+                            cov.e[k] = edges.q[k];
+                            cov.dx[k] = edges.p[k];
+                            cov.dy[k] = edges.step[k];
+                        }
+                        coverage_block(b, cov, evaluated);
                         std::vector<Span> spans(static_cast<std::size_t>(b.rows) * c.offsets.size());
                         wide_spans(v, c.bits, owns, c.offsets, b.i0, b.i0 + b.width - 1, b.j0, b.j0 + b.rows - 1,
                                    spans);
@@ -102,8 +105,8 @@ TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
                             const Span& span = spans[static_cast<std::size_t>(r) * c.offsets.size() +
                                                      static_cast<std::size_t>(s)];
                             const std::uint64_t expected = span_bits(span.lo, span.hi, b.i0);
-                            ASSERT_EQ(masks[r], expected) << hwy::TargetName(target) << " " << name(precision)
-                                                          << " triangle " << n << " row " << r;
+                            ASSERT_EQ(masks[r], expected) << name(precision) << " triangle " << n << " row " << r;
+                            ASSERT_EQ(evaluated[r], expected) << name(precision) << " triangle " << n << " row " << r;
                             ASSERT_EQ(fixed_row_coverage(edges.q, edges.p, edges.step, b.width, r), expected)
                                 << name(precision) << " triangle " << n << " row " << r;
                             partly_covered += expected != 0 && expected != first_bits(b.width);
@@ -121,11 +124,11 @@ TEST(WideRows, WalkedFromNearEdgesEqualTheSpansOnEveryBlock) {
             }
         // The cases are not all trivial: rows the edges cut, edges whose values at a block were clamped,
         // some beyond 64 bits, and triangles just past the limit.
-        EXPECT_GT(partly_covered, 10000) << hwy::TargetName(target);
-        EXPECT_GT(clamped, 1000) << hwy::TargetName(target);
-        EXPECT_GT(beyond_64_bits, 1000) << hwy::TargetName(target);
-        EXPECT_GT(without, 50) << hwy::TargetName(target);
-    }
+        EXPECT_GT(partly_covered, 10000);
+        EXPECT_GT(clamped, 1000);
+        EXPECT_GT(beyond_64_bits, 1000);
+        EXPECT_GT(without, 50);
+    });
 }
 
 // The whole-tile test on near edges, against the spans: a rejected tile holds no covered sample, an
