@@ -165,7 +165,7 @@ TEST(Api, RendersIntoAKeptFramebufferOverwritingEverySample) {
 // framebuffer, partial tiles at the right and bottom edges too, with one sample per pixel and four.
 TEST(Api, EmptyTilesOverwriteAKeptFramebuffer) {
     const Viewport vp{130, 70};  // 3 x 2 tiles of 64, the last column and row partial
-    for (const int samples : {1, 4}) {
+    for (const int samples : {1, 4, 16}) {
         Scene scene;
         scene.viewport = vp;
         scene.samples = samples;
