@@ -258,15 +258,17 @@ inline void cover_subtiles(const Setup& t, const Context& c, TileBuffer& tile, i
     } else {
         const int x = ti + bx0 * kSubtile, y = tj + by0 * kSubtile;
         const TileRect first{x, x + kSubtile - 1, y, y + kSubtile - 1};  // subtile (bx0, by0)
-        const FixedRect samples = samples_rect(c, first.i0, first.i1, first.j0, first.j1);
-        const std::int64_t step = std::int64_t{kSubtile} << c.bits;
-        for (std::size_t e = 0; e < 3; ++e) {
-            if (t.p.path == Path::wide) {  // in pixel steps
+        if (t.near) {
+            for (std::size_t e = 0; e < 3; ++e) {  // in pixel steps
                 const WideEdge& f = (*t.near)[e];
                 cover.lowest[e] = clamped(least_over(f, first));
                 cover.across[e] = f.a * kSubtile;
                 cover.down[e] = f.b * kSubtile;
-            } else {
+            }
+        } else {
+            const FixedRect samples = samples_rect(c, first.i0, first.i1, first.j0, first.j1);
+            const std::int64_t step = std::int64_t{kSubtile} << c.bits;
+            for (std::size_t e = 0; e < 3; ++e) {
                 cover.lowest[e] = least_over(t.fixed[e], samples);
                 cover.across[e] = t.fixed[e].a * step;
                 cover.down[e] = t.fixed[e].b * step;
