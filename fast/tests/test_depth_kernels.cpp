@@ -170,14 +170,18 @@ struct Outcome {
     bool undecided = false, written = false;
 };
 
-// The kernels on one block against the scalar test, which did `outcome`; a wrong answer is fatal.
+// The kernels and depth_block_scalar on one block against the scalar test on Coverage's definition, sample
+// by sample (row_coverage), which did `outcome`; a wrong answer is fatal.
 void expect_kernels_agree(const Block& b, const DepthPlane& p, const Coverage& cov, const Rows& start,
                           const char* trial, Outcome& outcome) {
     SCOPED_TRACE(trial);
-    Rows want = start, got = start;
+    Rows want = start, got = start, scalar = start;
     std::uint64_t want_open[kRowLanes], got_open[kRowLanes];
-    const bool want_any = depth_block_scalar(b, cov, p, want.view(), want_open);
+    const auto defined = [&](int r) { return row_coverage(b, cov, r); };
+    const bool want_any = depth_rows_scalar(b, defined, p, want.view(), want_open);
     outcome = {want_any, want.ids != start.ids};
+    ASSERT_EQ(depth_block_scalar(b, cov, p, scalar.view(), poisoned(got_open)), want_any);
+    expect_same(scalar, want, got_open, want_open, want_any, b, "depth_block_scalar");
     ASSERT_EQ(depth_block(b, cov, p, got.view(), poisoned(got_open)), want_any);
     expect_same(got, want, got_open, want_open, want_any, b, "depth_block");
     if (cov.kind != Coverage::Kind::fixed && cov.kind != Coverage::Kind::masks) return;
