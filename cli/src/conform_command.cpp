@@ -20,6 +20,7 @@
 #include "output_paths.h"
 #include "progress_meter.h"
 #include "replay.h"
+#include "wording.h"
 
 namespace rast::cli {
 namespace {
@@ -34,6 +35,7 @@ struct ConformOptions {
     std::string shard = "1/1";
     std::optional<std::string> corpus;
     std::string found = "corpus/found";
+    bool found_given = false;  // --found on the command line
     std::optional<std::string> json, markdown;
     double timeout = 60;
 };
@@ -87,14 +89,19 @@ std::string engine_path(const std::string& library) {
 
 int run_conform(const ConformOptions& o) {
     const auto [shard, shards] = parse_shard(o.shard);
-    check_output_paths({o.scenes.begin(), o.scenes.end()}, {{"--json", o.json}, {"--markdown", o.markdown}});
+    // A --found the user named is checked before the work, as the folder a case would be kept in (made if
+    // missing); the default is not: most runs keep nothing.
+    const std::optional<std::string> found_case =
+        o.found_given ? std::optional((fs::path(o.found) / "case.tri").string()) : std::nullopt;
+    check_output_paths({o.scenes.begin(), o.scenes.end()},
+                       {{"--json", o.json}, {"--markdown", o.markdown}, {"--found", found_case, true}});
 
     const Engine engine = plugin_engine(o.library, {o.timeout});
     std::vector<conform::Case> cases;
     ConformRun run{o.library, ""};
     if (!o.scenes.empty()) {
         for (const auto& scene : o.scenes) cases.push_back(conform::read_case(scene));
-        run.battery = std::to_string(cases.size()) + (cases.size() == 1 ? " scene" : " scenes") + " given";
+        run.battery = counted(cases.size(), "scene", "scenes") + " given";
     } else {
         const auto corpus = corpus_folder(o);
         if (corpus) cases = read_cases({*corpus});
@@ -147,14 +154,14 @@ int run_conform(const ConformOptions& o) {
                 std::cout << ")\n";
             } else {
                 ++passed;
-                std::cout << "PASS " << p.property << " (" << p.checked << " scenes)\n";
+                std::cout << "PASS " << p.property << " (" << counted(p.checked, "scene", "scenes") << ")\n";
             }
             continue;
         }
         ++failed;
         const conform::Finding& f = *p.failure;
         std::cout << "FAIL " << p.property << ": " << f.detail << "\n     shrunk from " << f.original_triangles
-                  << " to " << f.scene.triangles.size() << " triangles (" << f.origin << ")";
+                  << " to " << counted(f.scene.triangles.size(), "triangle", "triangles") << " (" << f.origin << ")";
         if (!f.kept.empty()) {
             fs::path picture = f.kept;
             picture.replace_extension(".png");
@@ -194,27 +201,39 @@ void add_conform_command(CLI::App& app, int& status) {
         "first violating sample, then 'N passed, M failed'. Exit status 0 when the engine conforms, 1 on a\n"
         "violation, 2 on bad usage or a plugin that fails (loads, crashes, hangs, returns an error or a bad id).");
     cmd->add_option("PLUGIN", o->library, "The plugin: a shared library with the plugin ABI")->required();
-    cmd->add_option("SCENE", o->scenes, "Scenes (.tri) to judge instead of the battery")->check(CLI::ExistingFile);
-    cmd->add_option("--cases", o->cases, "Generated scenes a property (the battery only)")
-        ->check(CLI::Range(0, 100000000))
-        ->capture_default_str();
-    cmd->add_option("--seed", o->seed, "The battery's seed: the same seed, shard and cases give the same scenes")
-        ->capture_default_str();
-    cmd->add_option("--shard", o->shard,
-                    "Run shard K of N (K/N): each shard's generated scenes come from seeds of its own, and kept "
-                    "cases are named by their content, so shards share a --found folder")
-        ->capture_default_str();
-    cmd->add_option("--corpus", o->corpus, "The corpus the battery starts with (default: corpus/ here, else the "
-                                           "installed one)")
-        ->check(CLI::ExistingDirectory);
-    cmd->add_option("--found", o->found, "Where shrunk counterexamples are kept")->capture_default_str();
+    CLI::Option* scenes =
+        cmd->add_option("SCENE", o->scenes, "Scenes (.tri) to judge instead of the battery")->check(CLI::ExistingFile);
+    // The battery's own options: with scenes they would be ignored.
+    CLI::Option* const battery[] = {
+        cmd->add_option("--cases", o->cases, "Generated scenes a property (the battery only)")
+            ->check(CLI::Range(0, 100000000))
+            ->capture_default_str(),
+        cmd->add_option("--seed", o->seed, "The battery's seed: the same seed, shard and cases give the same scenes")
+            ->check([](const std::string& seed) -> std::string {
+                return seed.find('-') == std::string::npos ? "" : "a seed cannot be negative, got " + seed;
+            })
+            ->capture_default_str(),
+        cmd->add_option("--shard", o->shard,
+                        "Run shard K of N (K/N): each shard's generated scenes come from seeds of its own, and kept "
+                        "cases are named by their content, so shards share a --found folder")
+            ->capture_default_str(),
+        cmd->add_option("--corpus", o->corpus,
+                        "The corpus the battery starts with (default: corpus/ here, else the installed one)")
+            ->check(CLI::ExistingDirectory)};
+    for (CLI::Option* option : battery) scenes->excludes(option);
+    CLI::Option* found =
+        cmd->add_option("--found", o->found, "Where shrunk counterexamples are kept (made if missing)")
+            ->capture_default_str();
     cmd->add_option("--json", o->json, "Write the verdict as JSON");
     cmd->add_option("--markdown", o->markdown, "Write the verdict as a Markdown report");
     cmd->add_option("--plugin-timeout", o->timeout,
                     "Seconds the plugin may take to load, and to render one scene, before it is stopped")
         ->check(CLI::Range(0.001, 86400.0))
         ->capture_default_str();
-    cmd->callback([o, &status] { status = run_conform(*o); });
+    cmd->callback([o, found, &status] {
+        o->found_given = found->count() > 0;
+        status = run_conform(*o);
+    });
 }
 
 }  // namespace rast::cli

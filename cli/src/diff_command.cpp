@@ -24,12 +24,12 @@ struct DiffOptions {
     SceneInput input;
     EngineChoice engine{.engine = "fast"};
     std::optional<std::string> image_out;
-    std::optional<int> magnify;  // none: small viewports magnified to kMinimumSide
+    std::optional<int> magnify;  // none: small viewports magnified up to kDefaultSide
 };
 
-// Small viewports are magnified (nearest neighbour) until the longer side is at least this many
-// picture pixels, so that single pixels are visible.
-constexpr int kMinimumSide = 512;
+// Small viewports are magnified (nearest neighbour) as many times as keeps the longer side within this
+// many picture pixels, at most kMaxMagnify, so that single pixels are visible.
+constexpr int kDefaultSide = 512;
 constexpr std::array<std::uint8_t, 3> kDisagree{255, 0, 255};
 
 // Where the two agree, the reference dimmed to a quarter; where any sample differs, the loud colour,
@@ -53,8 +53,7 @@ void run_diff(const DiffOptions& o) {
     check_output_paths({o.input.path}, {{"-o", o.image_out}});
     const Scene scene = o.input.load();
     const Viewport vp = scene.viewport;
-    const int scale = o.magnify.value_or(
-        std::max(1, (kMinimumSide + std::max(vp.width, vp.height) - 1) / std::max(vp.width, vp.height)));
+    const int scale = o.magnify.value_or(std::clamp(kDefaultSide / std::max(vp.width, vp.height), 1, kMaxMagnify));
     if (o.image_out) {
         // Three panels side by side, with two separators, checked before the work.
         try {
@@ -103,14 +102,19 @@ void add_diff_command(CLI::App& app) {
     add_scene_options(*cmd, o->input)->required();
     add_engine_options(*cmd, o->engine);
     // One side is always the reference.
-    cmd->get_option("--engine")->check(
-        [](const std::string& s) { return s == "reference" ? "diff compares the reference with another engine" : ""; });
+    cmd->get_option("--engine")
+        ->description("The rasterizer compared with the reference: the fast path, or plugin:PATH, a shared library "
+                      "with the plugin ABI (rast/plugin.h)")
+        ->type_name("fast|plugin:PATH")
+        ->check([](const std::string& s) {
+            return s == "reference" ? "diff compares the reference with another engine" : "";
+        });
     CLI::Option* image =
         cmd->add_option("-o,--output", o->image_out, "Write the side-by-side picture as PNG")->check(png_name);
     cmd->add_option("--magnify", o->magnify,
                     "Magnify the picture N times, nearest neighbour (default: small viewports up to 512 pixels a "
-                    "side); a pixel's magenta is stronger the more of its samples differ")
-        ->check(CLI::Range(1, 64))
+                    "side, at most 64 times); a pixel's magenta is stronger the more of its samples differ")
+        ->check(CLI::Range(1, kMaxMagnify))
         ->needs(image);
     cmd->callback([o] { run_diff(*o); });
 }

@@ -1,4 +1,5 @@
 #include "engine_choice.h"
+#include "wording.h"
 
 #include <rast/plugin_engine.h>
 
@@ -85,8 +86,8 @@ void note_unbounded_triangles(const Scene& scene, const Engine& engine) {
               std::numeric_limits<double>::infinity()))
             first = count++ == 0 ? k : first;
     if (count > 0)
-        std::cerr << "rast: note: " << engine.name << " cannot bound the edge functions of " << count
-                  << (count == 1 ? " triangle" : " triangles") << " (the first: triangle " << triangle_ids(scene)[first]
+        std::cerr << "rast: note: " << engine.name << " cannot bound the edge functions of "
+                  << counted(count, "triangle", "triangles") << " (the first: triangle " << triangle_ids(scene)[first]
                   << "), whose coordinates may overflow it: it may draw them wrongly or not at all\n";
 }
 

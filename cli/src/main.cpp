@@ -12,8 +12,8 @@ int main(int argc, char** argv) {
         "rast: a verified triangle rasterizer. An exact reference (CGAL orientation predicates, rational\n"
         "depth) and a fast path (fixed point or float; tiles, SIMD, threads), held against each other.\n"
         "Screen space is y up, pixel centres at (i + 1/2, j + 1/2), the top-left tie rule, smaller z nearer.\n"
-        "Exit status: 0 nothing found, 1 a verdict failed (replay, check), 2 bad usage, bad input or an engine\n"
-        "error."};
+        "Exit status: 0 nothing found, 1 a verdict failed (replay, check, conform), 2 bad usage, bad input or an\n"
+        "engine error."};
     app.require_subcommand(1);
     app.set_version_flag("--version", "rast " RAST_VERSION);
     int status = 0;

@@ -37,6 +37,9 @@ Image visible_image(const reference::VisibleArea& visible);
 // grey on a square-root scale: 0 black, 1/16 a quarter, 1/4 half, 1 white.
 Image resolve_error_image(const reference::VisibleArea& visible, const Framebuffer& fb);
 
+// The most --magnify takes: a larger scale shows nothing more of a pixel.
+inline constexpr int kMaxMagnify = 64;
+
 // Equally sized panels left to right, each magnified by `scale` (nearest neighbour, so single pixels stay
 // sharp), with a grey separator `scale` pixels wide between them. One panel: just the magnification.
 Image side_by_side(const std::vector<Image>& panels, int scale);

@@ -197,7 +197,7 @@ void add_render_command(CLI::App& app) {
             ->check(png_name);
     // Both shape the picture only: without one they would be ignored.
     cmd->add_option("--magnify", o->magnify, "Magnify the picture N times, nearest neighbour, so pixels stay sharp")
-        ->check(CLI::Range(1, 64))
+        ->check(CLI::Range(1, kMaxMagnify))
         ->capture_default_str()
         ->needs(image);
     cmd->add_option("--coverage", o->coverage,

@@ -1,4 +1,5 @@
 #include "replay.h"
+#include "wording.h"
 
 #include <rast/tri_format.h>
 
@@ -101,11 +102,14 @@ std::vector<const Property*> named_properties(const TriDocument& doc, const std:
     return selected;
 }
 
+// Every property and engine pair is a check, not applicable to the scene, or outside the engine's contract
+// (Property::applies_to): the three add up to the pairs.
 std::string pass_line(const fs::path& file, std::size_t properties, std::size_t engines, std::size_t checks,
                       std::size_t not_applicable) {
-    return "PASS " + file.string() + " (" + std::to_string(properties) + " properties x " +
-           std::to_string(engines) + " engines: " + std::to_string(checks) + " checks, " +
-           std::to_string(not_applicable) + " not applicable)";
+    return "PASS " + file.string() + " (" + counted(properties, "property", "properties") + " x " +
+           counted(engines, "engine", "engines") + ": " + counted(checks, "check", "checks") + ", " +
+           std::to_string(not_applicable) + " not applicable, " +
+           std::to_string(properties * engines - checks - not_applicable) + " outside a contract)";
 }
 
 std::string fail_line(const fs::path& file, const std::vector<Failure>& failures) {

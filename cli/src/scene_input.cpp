@@ -1,4 +1,5 @@
 #include "scene_input.h"
+#include "wording.h"
 
 #include <rast/mesh.h>
 #include <rast/number_text.h>
@@ -9,6 +10,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -38,6 +41,14 @@ CLI::Option* add_vector_option(CLI::App& command, const std::string& name, std::
         ->check(CLI::Number);
 }
 
+// A finite distance above 0 (CLI::PositiveNumber's message spells out the largest double, 309 digits).
+std::string positive_distance(const std::string& text) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    const bool read = end != text.c_str() && *end == '\0';
+    return read && value > 0 && std::isfinite(value) ? "" : "a distance must be finite and above 0, got " + text;
+}
+
 void add_mesh_view_options(CLI::App& command, MeshView& view) {
     const std::vector<CLI::Option*> options{
         command.add_option("--width", view.width, "Viewport width in pixels, for a mesh")
@@ -52,9 +63,9 @@ void add_mesh_view_options(CLI::App& command, MeshView& view) {
         command.add_option("--fov", view.fov_y_degrees, "Vertical field of view in degrees (default: 45)")
             ->check(CLI::Range(1e-3, 179.0)),
         command.add_option("--near", view.near_plane, "Near plane distance (default: framed)")
-            ->check(CLI::PositiveNumber),
+            ->check(positive_distance),
         command.add_option("--far", view.far_plane, "Far plane distance (default: framed)")
-            ->check(CLI::PositiveNumber)};
+            ->check(positive_distance)};
     // A .tri scene is in screen space already: it would ignore them. Parsing has read every argument before
     // any option is checked, so SCENE's value is there to look at.
     const auto for_meshes_only = [&command](const std::string&) -> std::string {
@@ -143,8 +154,8 @@ Scene SceneInput::load() const {
 }
 
 std::string summary(const Scene& scene) {
-    std::string text = std::to_string(scene.triangles.size()) + " triangles, ";
-    if (!scene.lines.empty()) text += std::to_string(scene.lines.size()) + (scene.lines.size() == 1 ? " line, " : " lines, ");
+    std::string text = counted(scene.triangles.size(), "triangle", "triangles") + ", ";
+    if (!scene.lines.empty()) text += counted(scene.lines.size(), "line", "lines") + ", ";
     return text + std::to_string(scene.viewport.width) + "x" + std::to_string(scene.viewport.height) + ", " +
            std::to_string(scene.samples) + " sample(s) per pixel";
 }

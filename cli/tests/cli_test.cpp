@@ -416,7 +416,20 @@ TEST_F(Cli, MeshOptionsPlaceAMesh) {
     const Result r = rast("render " + file("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n") +
                           " --width 5 --height 2 --eye 0,0,4 --fov 40 --ids-out " + out("ids.txt"));
     ASSERT_EQ(r.status, 0) << r.out;
-    EXPECT_TRUE(contains(r.out, " 1 triangles, 5x2, ")) << r.out;
+    EXPECT_TRUE(contains(r.out, " 1 triangle, 5x2, ")) << r.out;
+}
+
+// The near and far planes' distances are finite and above 0, and a refusal says so in a few words.
+TEST_F(Cli, ANearOrFarPlaneNotAboveZeroIsRefused) {
+    const std::string mesh = file("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    for (const std::string option : {"--near", "--far"})
+        for (const std::string value : {"-1", "0", "inf", "nan", "x"}) {
+            const Result r = rast("render " + mesh + " " + option + " " + value);
+            EXPECT_EQ(r.status, 2) << option << " " << value << ": " << r.out;
+            EXPECT_TRUE(contains(r.out, option + ": a distance must be finite and above 0, got " + value + "\n"))
+                << r.out;
+        }
+    EXPECT_EQ(rast("render " + mesh + " --near 0.5 --far 9").status, 0);
 }
 
 // A floor under the eye reaching behind it, seen from the origin looking down -z: the near and far planes

@@ -37,7 +37,9 @@ TEST_F(CorpusCommands, ReplayPassesAGoodCaseAndReportsAMalformedOneWithItsLine) 
     const Result r = rast("replay " + (dir / "cases").string());
     EXPECT_EQ(r.status, 2);  // a malformed case is bad input; a failing one alone would be 1
     // watertight and tie_rule each apply to the reference and the three fixed modes.
-    EXPECT_TRUE(contains(r.out, "PASS " + good + " (2 properties x 6 engines: 8 checks, 0 not applicable)\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "PASS " + good +
+                                    " (2 properties x 6 engines: 8 checks, 0 not applicable, 4 outside a contract)\n"))
+        << r.out;
     EXPECT_TRUE(contains(r.out, "ERROR " + bad + ":3: ")) << r.out;
     EXPECT_TRUE(contains(r.out, "\n1 passed, 1 failed\n")) << r.out;
 }
@@ -227,7 +229,8 @@ std::pair<unsigned, unsigned> png_size(const std::string& bytes) {
 }
 
 // --magnify sets the picture's scale: three 3x3 panels and two separators, each magnified twice, make
-// (3 * 3 + 2) * 2 = 22 by 6 pixels; without it a 3x3 viewport is magnified to 512 / 3, rounded up.
+// (3 * 3 + 2) * 2 = 22 by 6 pixels. Without it a viewport is magnified as many times as keeps its longer
+// side within 512 pixels, at most 64 (--magnify's own limit): 3x3 64 times, 24x10 21 times (504 pixels).
 // It shapes the picture only, so it needs -o.
 TEST_F(CorpusCommands, DiffMagnifiesThePictureAsAsked) {
     const std::string scene = file("square.tri", kGoodCase);
@@ -236,7 +239,11 @@ TEST_F(CorpusCommands, DiffMagnifiesThePictureAsAsked) {
     EXPECT_EQ(png_size(slurp(dir / "d.png")), (std::pair<unsigned, unsigned>{22, 6}));
     r = rast("diff " + scene + " -o " + (dir / "d.png").string());
     ASSERT_EQ(r.status, 0) << r.out;
-    EXPECT_EQ(png_size(slurp(dir / "d.png")), (std::pair<unsigned, unsigned>{11 * 171, 3 * 171}));
+    EXPECT_EQ(png_size(slurp(dir / "d.png")), (std::pair<unsigned, unsigned>{11 * 64, 3 * 64}));
+    const std::string wide = file("wide.tri", "viewport 24 10\ntri 0 0 0  4 0 0  0 4 0\n");
+    r = rast("diff " + wide + " -o " + (dir / "d.png").string());
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_EQ(png_size(slurp(dir / "d.png")), (std::pair<unsigned, unsigned>{(3 * 24 + 2) * 21, 10 * 21}));
     r = rast("diff " + scene + " --magnify 2");
     EXPECT_EQ(r.status, 2);
     EXPECT_TRUE(contains(r.out, "--magnify requires --output")) << r.out;

@@ -98,7 +98,8 @@ TEST_F(PluginCommands, ReplayHoldsAPluginToTheCasesProperties) {
         << naive.out;
     const Result fixed8 = rast("replay --engine plugin:" + kFixed8 + " " + scene);
     EXPECT_EQ(fixed8.status, 0) << fixed8.out;
-    EXPECT_TRUE(contains(fixed8.out, "PASS " + scene + " (2 properties x 1 engines: 2 checks")) << fixed8.out;
+    const std::string counts = " (2 properties x 1 engine: 2 checks, 0 not applicable, 0 outside a contract)\n";
+    EXPECT_TRUE(contains(fixed8.out, "PASS " + scene + counts)) << fixed8.out;
 }
 
 TEST_F(PluginCommands, ReplaySkipsACaseThePluginCannotRender) {
@@ -168,8 +169,8 @@ TEST_F(PluginCommands, ConformPassesTheFixedPathOnTheScenesGiven) {
     const Result r = rast("conform " + kFixed8 + " " + scene + " --found " + out("found"));
     EXPECT_EQ(r.status, 0) << r.out;
     EXPECT_TRUE(contains(r.out, "judged:   1 scene given\n")) << r.out;
-    EXPECT_TRUE(contains(r.out, "PASS watertight (1 scenes)\n")) << r.out;
-    EXPECT_TRUE(contains(r.out, "PASS conforms (1 scenes)\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "PASS watertight (1 scene)\n")) << r.out;
+    EXPECT_TRUE(contains(r.out, "PASS conforms (1 scene)\n")) << r.out;
     // The properties the scene does not claim judge nothing.
     EXPECT_TRUE(contains(r.out, "SKIP tie_rule (no scene it applies to)\n")) << r.out;
     EXPECT_TRUE(contains(r.out, "2 passed, 0 failed, 8 skipped\n")) << r.out;
@@ -198,6 +199,26 @@ TEST_F(PluginCommands, ConformRefusesABadShard) {
         EXPECT_EQ(r.status, 2) << shard << ": " << r.out;
         EXPECT_TRUE(contains(r.out, "expected K/N with 1 <= K <= N")) << r.out;
     }
+}
+
+// The battery's options with scenes given would be ignored, and a negative seed would wrap: both refused. A
+// --found folder that cannot be made is refused before the plugin is even loaded.
+TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
+    const std::string scene = file("split-square.tri", kSplitSquare);
+    for (const std::string& option : {std::string("--cases 5"), std::string("--seed 5"), std::string("--shard 1/2"),
+                                      "--corpus " + dir.string()}) {
+        const Result r = rast("conform " + kFixed8 + " " + scene + " " + option);
+        EXPECT_EQ(r.status, 2) << option << ": " << r.out;
+        EXPECT_TRUE(contains(r.out, "SCENE excludes " + option.substr(0, option.find(' ')))) << r.out;
+    }
+    const Result negative = rast("conform " + kFixed8 + " --seed -1 --cases 1");
+    EXPECT_EQ(negative.status, 2) << negative.out;
+    EXPECT_TRUE(contains(negative.out, "a seed cannot be negative, got -1")) << negative.out;
+    const Result found = rast("conform " + misbehaving("crash") + " " + scene + " --found " + scene + "/found");
+    EXPECT_EQ(found.status, 2) << found.out;
+    EXPECT_TRUE(contains(found.out, "--found '" + scene + "/found/case.tri': its parent '" + scene +
+                                        "' is not a folder"))
+        << found.out;
 }
 
 #ifdef RAST_WITH_BENCH

@@ -81,7 +81,8 @@ TEST_F(Replay, ACaseWrittenByAFailingPropertyFailsTheSameWayAndPassesAfterTheFix
     const CaseReport fixed = rast::cli::replay_case(file, rast::all_engines());
     EXPECT_EQ(fixed.status, CaseReport::Status::pass) << fixed.line;
     // tie_rule applies to the exact engines: the reference and the three fixed modes.
-    EXPECT_EQ(fixed.line, "PASS " + file.string() + " (1 properties x 6 engines: 4 checks, 0 not applicable)");
+    EXPECT_EQ(fixed.line,
+              "PASS " + file.string() + " (1 property x 6 engines: 4 checks, 0 not applicable, 2 outside a contract)");
 }
 
 // corpus/filters keeps scenes on which a weakened error bound changes a framebuffer (docs/filters.md). The
