@@ -288,7 +288,7 @@ void add_check_command(CLI::App& app, int& status) {
     // The folder is made only when a violation is found (an empty folder would put it in the working folder).
     CLI::Option* corpus_out =
         cmd->add_option("--corpus-out", o->corpus_out, "Folder for the corpus case a violation is written to")
-        ->check([](const std::string& folder) -> std::string { return folder.empty() ? "the path is empty" : ""; })
+        ->check(nonempty_folder)
         ->capture_default_str();
     cmd->add_option("--show", o->show, "How many violating samples to print")
         ->check([](const std::string& count) -> std::string {

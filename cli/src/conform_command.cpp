@@ -223,6 +223,7 @@ void add_conform_command(CLI::App& app, int& status) {
     for (CLI::Option* option : battery) scenes->excludes(option);
     CLI::Option* found =
         cmd->add_option("--found", o->found, "Where shrunk counterexamples are kept (made if missing)")
+            ->check(nonempty_folder)
             ->capture_default_str();
     cmd->add_option("--json", o->json, "Write the verdict as JSON");
     cmd->add_option("--markdown", o->markdown, "Write the verdict as a Markdown report");

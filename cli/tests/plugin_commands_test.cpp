@@ -201,8 +201,8 @@ TEST_F(PluginCommands, ConformRefusesABadShard) {
     }
 }
 
-// The battery's options with scenes given would be ignored, and a negative seed would wrap: both refused. A
-// --found folder that cannot be made is refused before the plugin is even loaded.
+// The battery's options with scenes given would be ignored, and a negative seed would wrap: both refused. An
+// empty --found, or one that cannot be made, is refused before the plugin is even loaded.
 TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
     const std::string scene = file("split-square.tri", kSplitSquare);
     for (const std::string& option : {std::string("--cases 5"), std::string("--seed 5"), std::string("--shard 1/2"),
@@ -214,6 +214,9 @@ TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
     const Result negative = rast("conform " + kFixed8 + " --seed -1 --cases 1");
     EXPECT_EQ(negative.status, 2) << negative.out;
     EXPECT_TRUE(contains(negative.out, "a seed cannot be negative, got -1")) << negative.out;
+    const Result empty = rast("conform " + misbehaving("crash") + " " + scene + " --found ''");
+    EXPECT_EQ(empty.status, 2) << empty.out;
+    EXPECT_TRUE(contains(empty.out, "--found: the path is empty")) << empty.out;
     const Result found = rast("conform " + misbehaving("crash") + " " + scene + " --found " + scene + "/found");
     EXPECT_EQ(found.status, 2) << found.out;
     EXPECT_TRUE(contains(found.out, "--found '" + scene + "/found/case.tri': its parent '" + scene +
