@@ -87,12 +87,23 @@ std::string engine_path(const std::string& library) {
     return unseen ? library : absolute.string();
 }
 
+// A seed in decimal digits, 0 to 2^64 - 1, written back without leading zeros: CLI11 would wrap a negative
+// one, saturate one too large, and read 010 as octal.
+std::string decimal_seed(std::string& text) {
+    std::uint64_t seed = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+    if (text.empty() || error != std::errc{} || end != text.data() + text.size())
+        return "a seed is a whole number from 0 to 2^64 - 1 in decimal digits, got " + text;
+    text = std::to_string(seed);
+    return "";
+}
+
 int run_conform(const ConformOptions& o) {
     const auto [shard, shards] = parse_shard(o.shard);
     // A --found the user named is checked before the work, as the folder a case would be kept in (made if
     // missing); the default is not: most runs keep nothing.
     const std::optional<std::string> found_case =
-        o.found_given ? std::optional((fs::path(o.found) / "case.tri").string()) : std::nullopt;
+        o.found_given ? std::optional((fs::path(o.found) / "<case>.tri").string()) : std::nullopt;
     check_output_paths({o.scenes.begin(), o.scenes.end()},
                        {{"--json", o.json}, {"--markdown", o.markdown}, {"--found", found_case, true}});
 
@@ -105,10 +116,10 @@ int run_conform(const ConformOptions& o) {
     } else {
         const auto corpus = corpus_folder(o);
         if (corpus) cases = read_cases({*corpus});
-        run.battery = "the battery: " + std::to_string(cases.size()) + " corpus cases" +
+        run.battery = "the battery: " + counted(cases.size(), "corpus case", "corpus cases") +
                       (corpus ? " (" + corpus->string() + ")" : " (no corpus found: --corpus DIR)") + ", then " +
-                      std::to_string(o.cases) + " generated cases a property, seed " + std::to_string(o.seed) +
-                      ", shard " + std::to_string(shard + 1) + "/" + std::to_string(shards);
+                      counted(o.cases, "generated case", "generated cases") + " a property, seed " +
+                      std::to_string(o.seed) + ", shard " + std::to_string(shard + 1) + "/" + std::to_string(shards);
     }
     std::cout << "engine:   " << engine.description << "\ncontract: " << engine.contract->text() << "\njudged:   "
               << run.battery << '\n';
@@ -209,9 +220,7 @@ void add_conform_command(CLI::App& app, int& status) {
             ->check(CLI::Range(0, 100000000))
             ->capture_default_str(),
         cmd->add_option("--seed", o->seed, "The battery's seed: the same seed, shard and cases give the same scenes")
-            ->check([](const std::string& seed) -> std::string {
-                return seed.find('-') == std::string::npos ? "" : "a seed cannot be negative, got " + seed;
-            })
+            ->transform(CLI::Validator(decimal_seed, ""))
             ->capture_default_str(),
         cmd->add_option("--shard", o->shard,
                         "Run shard K of N (K/N): each shard's generated scenes come from seeds of its own, and kept "

@@ -41,12 +41,16 @@ CLI::Option* add_vector_option(CLI::App& command, const std::string& name, std::
         ->check(CLI::Number);
 }
 
-// A finite distance above 0 (CLI::PositiveNumber's message spells out the largest double, 309 digits).
+// A finite distance of at least the least normal double, read as CLI11 reads it (strtold, then rounded to
+// double). CLI::PositiveNumber's message spells out the largest double, 309 digits; a subnormal near plane
+// left the camera's depth range empty, so that nothing was drawn.
 std::string positive_distance(const std::string& text) {
     char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
+    const double value = static_cast<double>(std::strtold(text.c_str(), &end));
     const bool read = end != text.c_str() && *end == '\0';
-    return read && value > 0 && std::isfinite(value) ? "" : "a distance must be finite and above 0, got " + text;
+    return read && value > 0 && std::isnormal(value)
+               ? ""
+               : "a distance must be finite and at least 2^-1022, the least normal double; got " + text;
 }
 
 void add_mesh_view_options(CLI::App& command, MeshView& view) {

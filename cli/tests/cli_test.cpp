@@ -419,17 +419,20 @@ TEST_F(Cli, MeshOptionsPlaceAMesh) {
     EXPECT_TRUE(contains(r.out, " 1 triangle, 5x2, ")) << r.out;
 }
 
-// The near and far planes' distances are finite and above 0, and a refusal says so in a few words.
+// The near and far planes' distances are finite and normal (a subnormal near plane drew nothing), and a
+// refusal says so in a few words.
 TEST_F(Cli, ANearOrFarPlaneNotAboveZeroIsRefused) {
     const std::string mesh = file("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     for (const std::string option : {"--near", "--far"})
-        for (const std::string value : {"-1", "0", "inf", "nan", "x"}) {
+        for (const std::string value : {"-1", "0", "1e-320", "inf", "nan", "x"}) {
             const Result r = rast("render " + mesh + " " + option + " " + value);
             EXPECT_EQ(r.status, 2) << option << " " << value << ": " << r.out;
-            EXPECT_TRUE(contains(r.out, option + ": a distance must be finite and above 0, got " + value + "\n"))
+            EXPECT_TRUE(contains(r.out, option + ": a distance must be finite and at least 2^-1022, the least "
+                                                 "normal double; got " + value + "\n"))
                 << r.out;
         }
     EXPECT_EQ(rast("render " + mesh + " --near 0.5 --far 9").status, 0);
+    EXPECT_EQ(rast("render " + mesh + " --near 1e-300").status, 0);
 }
 
 // A floor under the eye reaching behind it, seen from the origin looking down -z: the near and far planes

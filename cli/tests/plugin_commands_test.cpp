@@ -201,7 +201,8 @@ TEST_F(PluginCommands, ConformRefusesABadShard) {
     }
 }
 
-// The battery's options with scenes given would be ignored, and a negative seed would wrap: both refused. An
+// The battery's options with scenes given would be ignored, and a seed not in decimal digits would be read
+// wrongly: both refused. An
 // empty --found, or one that cannot be made, is refused before the plugin is even loaded.
 TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
     const std::string scene = file("split-square.tri", kSplitSquare);
@@ -211,15 +212,19 @@ TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
         EXPECT_EQ(r.status, 2) << option << ": " << r.out;
         EXPECT_TRUE(contains(r.out, "SCENE excludes " + option.substr(0, option.find(' ')))) << r.out;
     }
-    const Result negative = rast("conform " + kFixed8 + " --seed -1 --cases 1");
-    EXPECT_EQ(negative.status, 2) << negative.out;
-    EXPECT_TRUE(contains(negative.out, "a seed cannot be negative, got -1")) << negative.out;
+    // CLI11 alone would wrap -1, saturate 2^64 and read 010 as octal.
+    for (const std::string seed : {"-1", "+5", "0x10", "18446744073709551616", "1e3", "' 5'"}) {
+        const Result r = rast("conform " + kFixed8 + " --seed " + seed + " --cases 1");
+        EXPECT_EQ(r.status, 2) << seed << ": " << r.out;
+        EXPECT_TRUE(contains(r.out, "--seed: a seed is a whole number from 0 to 2^64 - 1 in decimal digits, got "))
+            << r.out;
+    }
     const Result empty = rast("conform " + misbehaving("crash") + " " + scene + " --found ''");
     EXPECT_EQ(empty.status, 2) << empty.out;
     EXPECT_TRUE(contains(empty.out, "--found: the path is empty")) << empty.out;
     const Result found = rast("conform " + misbehaving("crash") + " " + scene + " --found " + scene + "/found");
     EXPECT_EQ(found.status, 2) << found.out;
-    EXPECT_TRUE(contains(found.out, "--found '" + scene + "/found/case.tri': its parent '" + scene +
+    EXPECT_TRUE(contains(found.out, "--found '" + scene + "/found/<case>.tri': its parent '" + scene +
                                         "' is not a folder"))
         << found.out;
 }

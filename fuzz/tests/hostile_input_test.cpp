@@ -109,7 +109,7 @@ TEST_F(HostileInput, NonFiniteOrOutOfRangeArgumentsAreRefused) {
         {"--up 0,nan,0", "camera: eye, target and up must be finite"},
         {"--eye 0,0,0 --target 0,0,0", "camera: eye and target are the same point"},
         {"--fov nan", "camera: fov_y"},
-        {"--near nan", "--near: a distance must be finite and above 0"},
+        {"--near nan", "--near: a distance must be finite and at least 2^-1022"},
         {"--fov 180", "--fov"},
         {"--near inf", "--near"},
         {"--far -1", "--far"},
