@@ -96,8 +96,9 @@ std::string conform_markdown(const ConformRun& run, const conform::Verdict& verd
     for (const auto& p : verdict.properties) {
         out += "| " + p.property + " | " + verdict_status(p) + " | " + std::to_string(p.checked) + " | ";
         if (p.failure)
-            out += cell(p.failure->detail) + " | " + counted(p.failure->scene.triangles.size(), "triangle", "triangles") +
-                   " (from " + std::to_string(p.failure->original_triangles) + ", " +
+            out += cell(p.failure->detail) + " | " +
+                   counted(p.failure->scene.triangles.size(), "triangle", "triangles") + " (from " +
+                   std::to_string(p.failure->original_triangles) + ", " +
                    cell(p.failure->origin) + ")" + (p.failure->kept.empty() ? "" : ": `" + p.failure->kept.string() + "`");
         else
             out += " | ";

@@ -53,7 +53,8 @@ TEST_P(Determinism, ThreadCounts) {
 TEST_P(Determinism, SimdTargets) {
     const Scene scene = random_scene(4);
     const Framebuffer baseline = render(scene, {GetParam(), 2});
-    EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u) << "expected at least one SIMD target besides the fallback";
+    EXPECT_GE(hwy::SupportedAndGeneratedTargets().size(), 2u)
+        << "expected at least one SIMD target besides the fallback";
     on_every_target([&] { EXPECT_TRUE(identical(baseline, render(scene, {GetParam(), 2}))); });
 }
 
