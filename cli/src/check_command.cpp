@@ -5,6 +5,7 @@
 // status.
 #include "commands.h"
 #include "engine_choice.h"
+#include "option_checks.h"
 #include "output_paths.h"
 #include "scene_input.h"
 #include <rast/shell_word.h>
@@ -291,9 +292,7 @@ void add_check_command(CLI::App& app, int& status) {
         ->check(nonempty_folder)
         ->capture_default_str();
     cmd->add_option("--show", o->show, "How many violating samples to print")
-        ->check([](const std::string& count) -> std::string {
-            return count.find('-') == std::string::npos ? "" : "a count cannot be negative, got " + count;
-        })
+        ->transform(decimal_number("a count", std::numeric_limits<std::size_t>::max()))
         ->capture_default_str();
     cmd->callback([o, corpus_out, &status] {
         o->corpus_out_given = corpus_out->count() > 0;

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <limits>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -17,6 +18,7 @@
 
 #include "commands.h"
 #include "conform_reports.h"
+#include "option_checks.h"
 #include "output_paths.h"
 #include "progress_meter.h"
 #include "replay.h"
@@ -85,17 +87,6 @@ std::string engine_path(const std::string& library) {
     std::error_code unseen;
     const fs::path absolute = fs::absolute(library, unseen);
     return unseen ? library : absolute.string();
-}
-
-// A seed in decimal digits, 0 to 2^64 - 1, written back without leading zeros: CLI11 would wrap a negative
-// one, saturate one too large, and read 010 as octal.
-std::string decimal_seed(std::string& text) {
-    std::uint64_t seed = 0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
-    if (text.empty() || error != std::errc{} || end != text.data() + text.size())
-        return "a seed is a whole number from 0 to 2^64 - 1 in decimal digits, got " + text;
-    text = std::to_string(seed);
-    return "";
 }
 
 int run_conform(const ConformOptions& o) {
@@ -217,10 +208,10 @@ void add_conform_command(CLI::App& app, int& status) {
     // The battery's own options: with scenes they would be ignored.
     CLI::Option* const battery[] = {
         cmd->add_option("--cases", o->cases, "Generated scenes a property (the battery only)")
-            ->check(CLI::Range(0, 100000000))
+            ->transform(decimal_number("a count of cases", 100000000))
             ->capture_default_str(),
         cmd->add_option("--seed", o->seed, "The battery's seed: the same seed, shard and cases give the same scenes")
-            ->transform(CLI::Validator(decimal_seed, ""))
+            ->transform(decimal_number("a seed", std::numeric_limits<std::uint64_t>::max()))
             ->capture_default_str(),
         cmd->add_option("--shard", o->shard,
                         "Run shard K of N (K/N): each shard's generated scenes come from seeds of its own, and kept "

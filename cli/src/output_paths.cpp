@@ -69,6 +69,4 @@ void check_output_paths(const std::vector<fs::path>& inputs, const std::vector<O
     }
 }
 
-std::string nonempty_folder(const std::string& folder) { return folder.empty() ? "the path is empty" : ""; }
-
 }  // namespace rast::cli

@@ -22,7 +22,4 @@ struct OutputPath {
 // `inputs` nor as another output (the error then names both).
 void check_output_paths(const std::vector<std::filesystem::path>& inputs, const std::vector<OutputPath>& outputs);
 
-// A CLI11 check for a folder option: an empty name is refused (it would mean the current folder).
-std::string nonempty_folder(const std::string& folder);
-
 }  // namespace rast::cli

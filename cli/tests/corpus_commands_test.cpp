@@ -279,7 +279,9 @@ TEST_F(CorpusCommands, CheckRefusesABadCorpusFolderANegativeCountAndThreads) {
           std::pair{" --corpus-out " + not_a_folder + "/sub",
                     "rast: error: --corpus-out '" + not_a_folder + "/sub/check-fold-reference.tri': " + under_a_file},
           std::pair{std::string(" --corpus-out ''"), std::string("--corpus-out: the path is empty")},
-          std::pair{" --show -1 --corpus-out " + (dir / "found").string(), std::string("--show: a count cannot be negative, got -1")},
+          std::pair{" --show -1 --corpus-out " + (dir / "found").string(),
+                    std::string("--show: a count is a whole number from 0 to 18446744073709551615 in decimal digits, "
+                                "got -1")},
           std::pair{" --engine fast --threads 2 --corpus-out " + (dir / "found").string(),
                     std::string("The following arguments were not expected")}}) {
         const Result r = rast("check " + scene + args);

@@ -216,7 +216,14 @@ TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
     for (const std::string seed : {"-1", "+5", "0x10", "18446744073709551616", "1e3", "' 5'"}) {
         const Result r = rast("conform " + kFixed8 + " --seed " + seed + " --cases 1");
         EXPECT_EQ(r.status, 2) << seed << ": " << r.out;
-        EXPECT_TRUE(contains(r.out, "--seed: a seed is a whole number from 0 to 2^64 - 1 in decimal digits, got "))
+        EXPECT_TRUE(contains(r.out, "--seed: a seed is a whole number from 0 to 18446744073709551615 in decimal digits, "
+                                    "got "))
+            << r.out;
+    }
+    for (const std::string cases : {"-5", "100000001", "010x"}) {
+        const Result r = rast("conform " + kFixed8 + " --cases " + cases);
+        EXPECT_EQ(r.status, 2) << cases << ": " << r.out;
+        EXPECT_TRUE(contains(r.out, "--cases: a count of cases is a whole number from 0 to 100000000 in decimal digits"))
             << r.out;
     }
     const Result empty = rast("conform " + misbehaving("crash") + " " + scene + " --found ''");
