@@ -1,6 +1,7 @@
 // rast bench: every engine and precision mode on the same scenes in one run — speed (median and spread),
 // error against the exact reference, hard cases, and the antialiasing error of the sample patterns.
 #include "commands.h"
+#include "data_paths.h"
 #include "output_paths.h"
 #include <rast/shell_word.h>
 
@@ -15,7 +16,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <system_error>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,13 +23,10 @@
 namespace rast::cli {
 namespace {
 
-// The bunny: installed beside the program (PREFIX/bin/rast, PREFIX/share/rast/bunny.off), else the
-// source tree's, for a build that is run where it was built.
+// The bunny: installed beside the program (data_paths.h), else the source tree's, for a build that is run
+// where it was built.
 std::string default_mesh() {
-    std::error_code unseen;
-    const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", unseen);
-    const std::filesystem::path installed = program.parent_path().parent_path() / "share" / "rast" / "bunny.off";
-    if (!unseen && std::filesystem::is_regular_file(installed, unseen)) return installed.string();
+    if (auto installed = installed_data("bunny.off")) return installed->string();
     return RAST_DEFAULT_MESH;
 }
 

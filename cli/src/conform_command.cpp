@@ -18,6 +18,7 @@
 
 #include "commands.h"
 #include "conform_reports.h"
+#include "data_paths.h"
 #include "option_checks.h"
 #include "output_paths.h"
 #include "progress_meter.h"
@@ -56,17 +57,10 @@ std::pair<int, int> parse_shard(const std::string& text) {
     return {k - 1, n};
 }
 
-// The corpus the battery starts with: --corpus, else corpus/ here, else the one installed beside rast.
+// The corpus the battery starts with: --corpus, else the default one (data_paths.h).
 std::optional<fs::path> corpus_folder(const ConformOptions& o) {
     if (o.corpus) return fs::path(*o.corpus);
-    std::error_code error;
-    if (fs::is_directory("corpus", error)) return fs::path("corpus");
-    const auto self = fs::read_symlink("/proc/self/exe", error);
-    if (!error) {
-        const fs::path installed = self.parent_path() / ".." / "share" / "rast" / "corpus";
-        if (fs::is_directory(installed, error)) return installed;
-    }
-    return std::nullopt;
+    return default_corpus();
 }
 
 std::vector<conform::Case> read_cases(const std::vector<fs::path>& paths) {
@@ -218,7 +212,8 @@ void add_conform_command(CLI::App& app, int& status) {
                         "cases are named by their content, so shards share a --found folder")
             ->capture_default_str(),
         cmd->add_option("--corpus", o->corpus,
-                        "The corpus the battery starts with (default: corpus/ here, else the installed one)")
+                        "The corpus the battery starts with (default: corpus/ here, else the installed one, else the\n"
+                        "source tree's the program was built from)")
             ->check(CLI::ExistingDirectory)};
     for (CLI::Option* option : battery) scenes->excludes(option);
     CLI::Option* found =

@@ -1,5 +1,6 @@
 // rast replay: every corpus case, every property its header names, every engine; one line per case.
 #include "commands.h"
+#include "data_paths.h"
 #include "engine_choice.h"
 #include "replay.h"
 
@@ -9,7 +10,6 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
-#include <system_error>
 #include <vector>
 
 namespace rast::cli {
@@ -19,24 +19,25 @@ void add_replay_command(CLI::App& app, int& status) {
     auto choice = std::make_shared<EngineChoice>();
     CLI::App* cmd = app.add_subcommand(
         "replay",
-        "Replay corpus cases (.tri files, or folders of them; default: corpus/). Each case's '# properties:'\n"
-        "header names the properties that apply; each runs on the reference and on every fast precision it\n"
-        "applies to, or on the one engine --engine names (a plugin, say). One line per case: PASS, FAIL with\n"
-        "the property, engine and first differing sample, or ERROR path:line for a malformed file (the other\n"
-        "cases still run), or SKIP where nothing applies to the chosen engine. Then 'N passed, M failed'\n"
-        "(errors count as failed). Exit status 0 when every case passed, 1 when a case failed, 2 when a case\n"
-        "could not be read or is malformed, or the engine failed. Files are only read.");
+        "Replay corpus cases (.tri files, or folders of them; default: corpus/ here, else the installed corpus,\n"
+        "else the source tree's). Each case's '# properties:' header names the properties that apply; each runs\n"
+        "on the reference and on every fast precision it applies to, or on the one engine --engine names (a\n"
+        "plugin, say). One line per case: PASS, FAIL with the property, engine and first differing sample, or\n"
+        "ERROR path:line for a malformed file (the other cases still run), or SKIP where nothing applies to the\n"
+        "chosen engine. Then 'N passed, M failed' (errors count as failed). Exit status 0 when every case\n"
+        "passed, 1 when a case failed, 2 when a case could not be read or is malformed, or the engine failed.\n"
+        "Files are only read.");
     cmd->add_option("PATH", *paths, "Case files or folders")->default_str("corpus");
     add_engine_options(*cmd, *choice);
     CLI::Option* engine = cmd->get_option("--engine");
     engine->default_str("every built-in engine");
     cmd->callback([paths, choice, engine, &status] {
         if (paths->empty()) {
-            std::error_code unseen;
-            if (!std::filesystem::exists("corpus", unseen))
-                throw std::runtime_error("no case given, and no corpus folder here to replay: name the cases or "
-                                         "folders (rast replay PATH...), or run it where corpus/ is");
-            paths->push_back("corpus");
+            const auto corpus = default_corpus();
+            if (!corpus)
+                throw std::runtime_error("no case given, and no corpus to replay (none here, installed or in the "
+                                         "source tree): name the cases or folders (rast replay PATH...)");
+            paths->push_back(*corpus);
         }
         const bool chosen = engine->count() > 0;
         const auto engines = chosen ? std::vector<Engine>{choice->make()} : all_engines();

@@ -180,7 +180,7 @@ TEST_F(Cli, BadArgumentsAreRejected) {
 
 // What a first try runs into, each answered by name: the version; an unknown command, with the commands
 // there are; a picture name that is not .png (rast would have written PNG bytes under it); an option
-// given twice; replay with no corpus here to replay.
+// given twice.
 TEST_F(Cli, FirstTriesAreAnsweredByName) {
     const std::string scene = file("corner.tri", kCorner);
     Result r = rast("--version");
@@ -200,9 +200,6 @@ TEST_F(Cli, FirstTriesAreAnsweredByName) {
     r = rast("render " + scene + " --engine fast --engine reference");
     EXPECT_EQ(r.status, 2);
     EXPECT_TRUE(contains(r.out, "--engine: At Most 1 required but received 2")) << r.out;
-    r = run("cd " + shell_word(dir.string()) + " && " + RAST_BINARY + " replay 2>&1");
-    EXPECT_EQ(r.status, 2);
-    EXPECT_TRUE(contains(r.out, "rast: error: no case given, and no corpus folder here to replay")) << r.out;
 }
 
 // A triangle at 10^38 is beyond what float32 can bound (its products overflow): float32 leaves it out of

@@ -164,6 +164,18 @@ TEST_F(PluginCommands, ConformCatchesTheTutorialRasterizerAndKeepsReplayableCase
     EXPECT_GE(kept, 3u);
 }
 
+// Run from a folder with no corpus/, a build run in its build tree takes the corpus of its source tree (an
+// installed one, the installed corpus): conform's battery and replay's cases are not left empty.
+TEST_F(PluginCommands, AWayFromTheSourceTreeTheCorpusIsStillFound) {
+    const std::string here = "cd " + shell_word(dir.string()) + " && " + RAST_BINARY + " ";
+    Result r = run(here + "conform " + kNaive + " --cases 1 --found " + out("found") + " 2>&1");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, " corpus cases (" RAST_CORPUS "), then 1 generated case a property")) << r.out;
+    r = run(here + "replay --engine plugin:" + kNaive + " 2>&1");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_TRUE(contains(r.out, "FAIL " RAST_CORPUS "/tie-rule/")) << r.out;
+}
+
 TEST_F(PluginCommands, ConformPassesTheFixedPathOnTheScenesGiven) {
     const std::string scene = file("split-square.tri", "# properties: watertight\n" + kSplitSquare);
     const Result r = rast("conform " + kFixed8 + " " + scene + " --found " + out("found"));
