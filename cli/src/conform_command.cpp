@@ -85,12 +85,11 @@ std::string engine_path(const std::string& library) {
 
 int run_conform(const ConformOptions& o) {
     const auto [shard, shards] = parse_shard(o.shard);
-    // A --found the user named is checked before the work, as the folder a case would be kept in (made if
-    // missing); the default is not: most runs keep nothing.
-    const std::optional<std::string> found_case =
-        o.found_given ? std::optional((fs::path(o.found) / "<case>.tri").string()) : std::nullopt;
+    // A --found the user named is checked before the work (made if missing); the default is not: most runs
+    // keep nothing.
+    const std::optional<std::string> found = o.found_given ? std::optional(o.found) : std::nullopt;
     check_output_paths({o.scenes.begin(), o.scenes.end()},
-                       {{"--json", o.json}, {"--markdown", o.markdown}, {"--found", found_case, true}});
+                       {{"--json", o.json}, {"--markdown", o.markdown}, {"--found", found, false, true}});
 
     const Engine engine = plugin_engine(o.library, {o.timeout});
     std::vector<conform::Case> cases;

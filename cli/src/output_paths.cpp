@@ -22,25 +22,35 @@ bool same_file(const fs::path& a, const fs::path& b) {
     return fs::weakly_canonical(fs::absolute(a)) == fs::weakly_canonical(fs::absolute(b));
 }
 
-// Why `path` cannot be written, or nothing if it can.
-std::optional<std::string> unwritable(const fs::path& path, bool makes_folders) {
+// Why `output` cannot be written, or nothing if it can.
+std::optional<std::string> unwritable(const OutputPath& output) {
+    const fs::path path = *output.path;
     if (path.empty()) return "the path is empty";
-    if (!path.has_filename()) return "the path names a folder, not a file";
     const fs::file_status status = fs::status(path);
-    if (fs::is_directory(status)) return "is a folder";
-    // The file is replaced by renaming a new one over it: that would replace a device or a pipe, not write to it.
-    if (fs::exists(status) && !fs::is_regular_file(status)) return "exists and is not a regular file";
-    const fs::path own = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    // The folder its files are made in: the path itself for a folder, else the file's.
+    fs::path own = path;
+    if (output.is_folder) {
+        if (fs::exists(status) && !fs::is_directory(status)) return "exists and is not a folder";
+    } else {
+        if (!path.has_filename()) return "the path names a folder, not a file";
+        if (fs::is_directory(status)) return "is a folder";
+        // The file is replaced by renaming a new one over it: that would replace a device or a pipe, not write
+        // to it.
+        if (fs::exists(status) && !fs::is_regular_file(status)) return "exists and is not a regular file";
+        own = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    }
     fs::path folder = own;
     // The missing folders would be made in the nearest one that exists.
-    if (makes_folders)
+    if (output.makes_folders || output.is_folder)
         while (!fs::exists(folder) && folder != ".") folder = folder.has_parent_path() ? folder.parent_path() : ".";
     if (!fs::exists(folder)) return "its folder '" + folder.string() + "' does not exist";
     if (!fs::is_directory(folder)) return "its parent '" + folder.string() + "' is not a folder";
-    // The new file is made in the folder and renamed into place, which needs write and search permission.
+    // A new file is made in the folder (and renamed into place), which needs write and search permission.
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
-        return (folder == own ? "cannot write in its folder '" : "cannot make its folder in '") + folder.string() +
-               "': " + std::error_code(errno, std::generic_category()).message();
+        return (folder == path ? std::string("cannot write in it")
+                : folder == own ? "cannot write in its folder '" + folder.string() + "'"
+                                : "cannot make its folder in '" + folder.string() + "'") +
+               ": " + std::error_code(errno, std::generic_category()).message();
     return std::nullopt;
 }
 
@@ -52,7 +62,7 @@ void check_output_paths(const std::vector<fs::path>& inputs, const std::vector<O
         if (!output.path) continue;
         const std::string named = output.option + " '" + *output.path + "'";
         try {
-            if (const auto why = unwritable(*output.path, output.makes_folders))
+            if (const auto why = unwritable(output))
                 throw std::runtime_error(named + ": " + *why);
             for (const fs::path& input : inputs)
                 if (same_file(*output.path, input))

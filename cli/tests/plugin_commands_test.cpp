@@ -214,8 +214,8 @@ TEST_F(PluginCommands, ConformRefusesABadShard) {
 }
 
 // The battery's options with scenes given would be ignored, and a seed not in decimal digits would be read
-// wrongly: both refused. An
-// empty --found, or one that cannot be made, is refused before the plugin is even loaded.
+// wrongly: both refused. An empty --found, a file, or one that cannot be made is refused before the plugin
+// is even loaded.
 TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
     const std::string scene = file("split-square.tri", kSplitSquare);
     for (const std::string& option : {std::string("--cases 5"), std::string("--seed 5"), std::string("--shard 1/2"),
@@ -241,11 +241,13 @@ TEST_F(PluginCommands, ConformRefusesWhatItWouldIgnoreOrCouldNotWrite) {
     const Result empty = rast("conform " + misbehaving("crash") + " " + scene + " --found ''");
     EXPECT_EQ(empty.status, 2) << empty.out;
     EXPECT_TRUE(contains(empty.out, "--found: the path is empty")) << empty.out;
-    const Result found = rast("conform " + misbehaving("crash") + " " + scene + " --found " + scene + "/found");
+    Result found = rast("conform " + misbehaving("crash") + " " + scene + " --found " + scene + "/found");
     EXPECT_EQ(found.status, 2) << found.out;
-    EXPECT_TRUE(contains(found.out, "--found '" + scene + "/found/<case>.tri': its parent '" + scene +
-                                        "' is not a folder"))
+    EXPECT_TRUE(contains(found.out, "--found '" + scene + "/found': its parent '" + scene + "' is not a folder"))
         << found.out;
+    found = rast("conform " + misbehaving("crash") + " " + scene + " --found " + scene);
+    EXPECT_EQ(found.status, 2) << found.out;
+    EXPECT_TRUE(contains(found.out, "--found '" + scene + "': exists and is not a folder")) << found.out;
 }
 
 #ifdef RAST_WITH_BENCH
