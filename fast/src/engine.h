@@ -117,8 +117,16 @@ void render_tile(std::span<const Chunk> chunks, std::span<const SceneOccluders::
             }
             if (next_other == kEnd) break;
             if (next_small < next_big) {
-                rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false), small[a].id, rect, tile, scene);
-                ++a;
+                // The small lane's triangles before the next of the other two, their planes set up
+                // kPlaneBatch at a time.
+                const std::int32_t until = std::min(next_big, f < fixed.size() ? fixed[f].id : kEnd);
+                std::size_t n = 1;
+                while (n < kPlaneBatch && a + n < small.size() && small[a + n].id < until) ++n;
+                Plane planes[kPlaneBatch];
+                placed_planes(n, [&](std::size_t k) -> const Placed& { return small[a + k].p; }, scene.c, planes);
+                for (std::size_t k = 0; k < n; ++k, ++a)
+                    rasterize<F>(setup_triangle<F>(small[a].p, scene.c, false, planes[k]), small[a].id, rect, tile,
+                                 scene);
             } else {
                 const Setup* next = b + 1 < big.size() ? &chunk.big[big[b + 1].setup] : nullptr;
                 compose_big(chunk.big[big[b].setup], big[b].id, next);

@@ -74,6 +74,70 @@ void NarrowPlanes(PlaneBatch& t, const PlaneGrid& g) {
     }
 }
 
+// bounded.h's operations in lanes, with their weight 1 (filters::Sound) and the association of their sums.
+HWY_INLINE BoundedLanes SubLanes(BoundedLanes x, BoundedLanes y) {
+    const D d;
+    const V v = hn::Sub(x.v, y.v);
+    return {v, hn::Add(hn::Add(x.e, y.e), hn::Mul(hn::Set(d, kUnitDouble), hn::Abs(v)))};
+}
+
+HWY_INLINE BoundedLanes AddLanes(BoundedLanes x, BoundedLanes y) {
+    const D d;
+    const V v = hn::Add(x.v, y.v);
+    return {v, hn::Add(hn::Add(x.e, y.e), hn::Mul(hn::Set(d, kUnitDouble), hn::Abs(v)))};
+}
+
+// Its own rounding, u |v| + 2^-1074, for a product or quotient.
+HWY_INLINE V RoundingLanes(V v) {
+    const D d;
+    return hn::Add(hn::Mul(hn::Set(d, kUnitDouble), hn::Abs(v)), hn::Set(d, DBL_TRUE_MIN));
+}
+
+HWY_INLINE BoundedLanes MulLanes(BoundedLanes x, BoundedLanes y) {
+    const V v = hn::Mul(x.v, y.v);
+    const V e = hn::Add(hn::Add(hn::Mul(hn::Abs(x.v), y.e), hn::Mul(hn::Abs(y.v), x.e)), hn::Mul(x.e, y.e));
+    return {v, hn::Add(e, RoundingLanes(v))};
+}
+
+HWY_INLINE BoundedLanes DivLanes(BoundedLanes x, BoundedLanes y) {
+    const D d;
+    const V v = hn::Div(x.v, y.v);
+    const V e = hn::Add(hn::Div(hn::Add(x.e, hn::Mul(hn::Abs(v), y.e)), hn::Sub(hn::Abs(y.v), y.e)), RoundingLanes(v));
+    return {v, hn::IfThenElse(hn::Gt(hn::Abs(y.v), y.e), e, hn::Set(d, std::numeric_limits<double>::infinity()))};
+}
+
+void MakePlanes(CornerBatch& t, const PlaneGrid& g) {
+    const D d;
+    const hn::Rebind<std::int32_t, D> di;
+    const V u = hn::Set(d, kUnitDouble), zero = hn::Zero(d);
+    for (int k = 0; k < kPlaneBatch; k += static_cast<int>(hn::Lanes(d))) {
+        const auto exact = [&](const double* p) { return BoundedLanes{hn::LoadU(d, p + k), zero}; };
+        const auto whole = [&](const std::int32_t* p) { return hn::PromoteTo(d, hn::LoadU(di, p + k)); };
+        const BoundedLanes x0 = exact(t.x[0]), y0 = exact(t.y[0]), z0 = exact(t.z[0]);
+        const BoundedLanes dx1 = SubLanes(exact(t.x[1]), x0), dy1 = SubLanes(exact(t.y[1]), y0);
+        const BoundedLanes dx2 = SubLanes(exact(t.x[2]), x0), dy2 = SubLanes(exact(t.y[2]), y0);
+        const BoundedLanes dz1 = SubLanes(exact(t.z[1]), z0), dz2 = SubLanes(exact(t.z[2]), z0);
+        const BoundedLanes det = SubLanes(MulLanes(dx1, dy2), MulLanes(dx2, dy1));
+        const BoundedLanes a = DivLanes(SubLanes(MulLanes(dz1, dy2), MulLanes(dz2, dy1)), det);
+        const BoundedLanes b = DivLanes(SubLanes(MulLanes(dx1, dz2), MulLanes(dx2, dz1)), det);
+        // plane_over_box
+        const auto reach = [&](const std::int32_t* lo, double o_min, const std::int32_t* hi, double o_max, V v0) {
+            return hn::Max(hn::Abs(hn::Sub(hn::Add(whole(lo), hn::Set(d, o_min)), v0)),
+                           hn::Abs(hn::Sub(hn::Add(whole(hi), hn::Set(d, o_max)), v0)));
+        };
+        const V reach_x = reach(t.i_lo, g.ox_min, t.i_hi, g.ox_max, x0.v);
+        const V reach_y = reach(t.j_lo, g.oy_min, t.j_hi, g.oy_max, y0.v);
+        const BoundedLanes tx = MulLanes({hn::Abs(a.v), a.e}, {reach_x, hn::Mul(u, reach_x)});
+        const BoundedLanes ty = MulLanes({hn::Abs(b.v), b.e}, {reach_y, hn::Mul(u, reach_y)});
+        const BoundedLanes z = AddLanes({hn::Abs(z0.v), zero}, AddLanes(tx, ty));
+        const V err = hn::Mul(z.e, hn::Set(d, kSlack));
+        hn::StoreU(a.v, d, t.a + k);
+        hn::StoreU(b.v, d, t.b + k);
+        hn::StoreU(hn::IfThenElse(hn::IsFinite(err), err, hn::Set(d, std::numeric_limits<double>::infinity())), d,
+                   t.err + k);
+    }
+}
+
 }  // namespace rast::fast::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -81,10 +145,13 @@ HWY_AFTER_NAMESPACE();
 namespace rast::fast::detail {
 
 HWY_EXPORT(NarrowPlanes);
+HWY_EXPORT(MakePlanes);
 
 void narrow_planes(PlaneBatch& batch, const PlaneGrid& grid) {
     HWY_DYNAMIC_DISPATCH(NarrowPlanes)(batch, grid);
 }
+
+void make_planes(CornerBatch& batch, const PlaneGrid& grid) { HWY_DYNAMIC_DISPATCH(MakePlanes)(batch, grid); }
 
 }  // namespace rast::fast::detail
 #endif  // HWY_ONCE

@@ -426,6 +426,30 @@ inline std::uint32_t small_planes(std::span<const SmallFixed> run, const Context
     return narrow;
 }
 
+// The depth planes of n placed triangles (1 to kPlaneBatch), placed(k) the k-th: make_plane's, set up
+// together (make_planes).
+template <class PlacedOf>
+void placed_planes(std::size_t n, PlacedOf placed, const Context& c, Plane* planes) {
+    CornerBatch batch;
+    for (std::size_t k = 0; k < kPlaneBatch; ++k) {
+        const Placed& s = placed(k < n ? k : 0);  // lanes past the run repeat its first
+        for (int corner = 0; corner < 3; ++corner) {
+            batch.x[corner][k] = s.v[corner].x;
+            batch.y[corner][k] = s.v[corner].y;
+            batch.z[corner][k] = s.v[corner].z;
+        }
+        batch.i_lo[k] = s.i_lo;
+        batch.i_hi[k] = s.i_hi;
+        batch.j_lo[k] = s.j_lo;
+        batch.j_hi[k] = s.j_hi;
+    }
+    make_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
+    for (std::size_t k = 0; k < n; ++k) {
+        const Vertex& v0 = placed(k).v[0];
+        planes[k] = Plane{v0.x, v0.y, v0.z, batch.a[k], batch.b[k], batch.err[k]};
+    }
+}
+
 // The float modes' tile margin: the mode's edge error bound plus that of the double evaluation the tile
 // classification makes, rounded up.
 inline double float_margin(const Corners& v, const Context& c) {
@@ -449,10 +473,12 @@ inline bool fills_box(const Corners& v) {
 }
 
 // classify_tiles: also compute what whole-tile trivial accept / reject needs (worth it for a triangle
-// that spans tiles; a small one is classified by its edge functions alone).
+// that spans tiles; a small one is classified by its edge functions alone). `plane`: make_plane's, found
+// beforehand (the small lane's, by placed_planes) or by the overload below.
 template <Fault F>
-Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles) {
+Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles, const Plane& plane) {
     Setup s;
+    s.plane = plane;
     s.p = placed;
     s.classify_tiles = classify_tiles;
     const Corners& v = placed.v;
@@ -491,8 +517,12 @@ Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles
                 s.bands = wide_bands(v, c.bits, s.owns, c.offsets, s.p.i_lo, s.p.i_hi, s.p.j_lo, s.p.j_hi, kTile);
             break;
     }
-    s.plane = make_plane(placed, c);
     return s;
+}
+
+template <Fault F>
+Setup setup_triangle(const Placed& placed, const Context& c, bool classify_tiles) {
+    return setup_triangle<F>(placed, c, classify_tiles, make_plane(placed, c));
 }
 
 // What the tiles need of the whole scene: the input triangles, for the exact depth order.

@@ -5,7 +5,8 @@
 // the bits of the narrow plane in scalar code; its gradient make_plane's (the same rounded operations), and
 // its bound no larger (it leaves out only error terms that are zero there). Triangles from the small lane's
 // own records in every fixed mode, and placed ones of every path, with depths of every magnitude and sign,
-// flat planes and near-degenerate corners.
+// flat planes and near-degenerate corners. placed_planes, the other small triangles' planes in lanes:
+// make_plane's bits.
 #include "setup.h"
 #include "targets.h"
 
@@ -172,6 +173,59 @@ TEST(SmallPlanes, AreTheScalarNarrowPlanesOnEveryTarget) {
             EXPECT_GT(narrow_count, 1000);
             if (precision == Precision::fixed16) {
                 EXPECT_GT(wide_count, 1000);
+            }
+        });
+    }
+}
+
+// placed_planes, the small lane's planes in lanes, in runs of 1 to kPlaneBatch: make_plane's bits, on every
+// SIMD target, for placed triangles of every path, with corners from a pixel apart to 10^300 (overflowing
+// products, unbounded planes) and depths of every magnitude.
+TEST(PlacedPlanes, AreMakePlanesBitsOnEveryTarget) {
+    std::mt19937_64 rng(20261129);
+    for (const Precision precision : {Precision::fixed8, Precision::float32, Precision::float64}) {
+        SCOPED_TRACE(::testing::Message() << "precision " << static_cast<int>(precision));
+        const Context c = make_context<Fault::none>({1024, 1024}, 4, precision);
+        std::vector<Placed> placed;
+        int unbounded = 0, undecided_det = 0;
+        for (int n = 0; n < 4000; ++n) {
+            // Corners up to `reach` pixels either way of a point of the viewport.
+            const double reach = std::array{1.0, 8.0, 1500.0, 1e9, 1e300}[n % 5];
+            std::uniform_real_distribution<double> where(0, 1000), offset(-reach, reach);
+            const double x = where(rng), y = where(rng);
+            const std::array<double, 3> z = random_depths(rng);
+            Triangle t;
+            for (int k = 0; k < 3; ++k) t.v[k] = {x + offset(rng), y + offset(rng), z[k]};
+            if (n % 3 == 0) {  // the third corner a few units in the last place off the line of the others
+                const double along = std::uniform_real_distribution<double>(0, 1)(rng);
+                t.v[2].x = t.v[0].x + along * (t.v[1].x - t.v[0].x);
+                t.v[2].y = t.v[0].y + along * (t.v[1].y - t.v[0].y);
+                for (int ulp = 0; ulp < n % 4; ++ulp) t.v[2].y = std::nextafter(t.v[2].y, INFINITY);
+            }
+            const std::optional<Placed> p = place<Fault::none>(t, c);
+            if (!p) continue;
+            placed.push_back(*p);
+            unbounded += !(make_plane(*p, c).err < std::numeric_limits<double>::infinity());
+            const Corners& v = p->v;
+            const Bounded dx1 = sub(exact(v[1].x), exact(v[0].x)), dy1 = sub(exact(v[1].y), exact(v[0].y));
+            const Bounded dx2 = sub(exact(v[2].x), exact(v[0].x)), dy2 = sub(exact(v[2].y), exact(v[0].y));
+            const Bounded det = sub(mul(dx1, dy2), mul(dx2, dy1));
+            undecided_det += !(std::abs(det.v) > det.e);
+        }
+        ASSERT_GT(placed.size(), 2500u);
+        EXPECT_GT(unbounded, 100);  // the generator reaches make_plane's infinite bounds
+        EXPECT_GT(undecided_det, 10);  // and determinants whose sign the doubles leave open
+        on_every_target([&] {
+            for (std::size_t first = 0, n = 1; first < placed.size(); first += n, n = n % kPlaneBatch + 1) {
+                n = std::min(n, placed.size() - first);
+                Plane planes[kPlaneBatch];
+                placed_planes(n, [&](std::size_t k) -> const Placed& { return placed[first + k]; }, c, planes);
+                for (std::size_t k = 0; k < n; ++k) {
+                    const Plane want = make_plane(placed[first + k], c), &got = planes[k];
+                    SCOPED_TRACE(::testing::Message() << "triangle " << first + k);
+                    for (const auto field : {&Plane::x0, &Plane::y0, &Plane::z0, &Plane::a, &Plane::b, &Plane::err})
+                        ASSERT_EQ(bits(got.*field), bits(want.*field));
+                }
             }
         });
     }
