@@ -7,6 +7,8 @@
 
 #include "place_batch.h"
 
+#include <rast/filters/orientation.h>
+
 #include <algorithm>
 #include <cstring>
 
@@ -115,6 +117,76 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
     }
 }
 
+// place<Fault::none>'s steps for the float modes (setup.h), for every lane at once.
+void PlaceFloatBatch(const Triangle* t, int n, const PlaceGrid& g, FloatPlacedBatch& out) {
+    const D d;
+    const DI di;
+    const DI32 di32;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    out.small = out.culled = 0;
+    const V minus_one = hn::Set(d, -1), zero = hn::Zero(d);
+    for (int first = 0; first < n; first += lanes) {
+        const int count = std::min(lanes, n - first);
+        // Lanes past the batch read its last triangle again, and are in no mask.
+        const auto lane = hn::Min(hn::Iota(di, 0), hn::Set(di, count - 1));
+        const auto index = hn::Add(hn::ShiftLeft<3>(lane), lane);  // 9 doubles a triangle
+        const double* base = &t[first].v[0].x;
+        V x[3], y[3], z[3];
+        auto finite = hn::FirstN(d, static_cast<std::size_t>(count));
+        for (int k = 0; k < 3; ++k) {
+            x[k] = hn::GatherIndex(d, base + 3 * k, index);
+            y[k] = hn::GatherIndex(d, base + 3 * k + 1, index);
+            z[k] = hn::GatherIndex(d, base + 3 * k + 2, index);
+            finite = hn::And(finite, hn::And(hn::IsFinite(x[k]), hn::And(hn::IsFinite(y[k]), hn::IsFinite(z[k]))));
+        }
+        // filters::orientation(p = corner 0, q = corner 1, r = corner 2) with its Sound weights (1), as written
+        // there, and its certain_sign: the lanes it leaves open (0) go to place's exact orientation.
+        const V left = hn::Mul(hn::Sub(x[1], x[0]), hn::Sub(y[2], y[0]));
+        const V right = hn::Mul(hn::Sub(y[1], y[0]), hn::Sub(x[2], x[0]));
+        const V bound = hn::Add(hn::Mul(hn::Set(d, filters::kOrientationRelative), hn::Add(hn::Abs(left), hn::Abs(right))),
+                                hn::Set(d, filters::kOrientationUnderflow));
+        const V det = hn::Sub(left, right);
+        const auto counter_clockwise = hn::Gt(det, bound), clockwise = hn::Lt(det, hn::Neg(bound));
+        // pixel_range: clamped to [-1, size], where ceil and floor are its truncations corrected by one;
+        // then clip_range.
+        const auto range = [&](V lo, V hi, double o_min, double o_max, double size, V& from, V& to) {
+            const V top = hn::Set(d, size);
+            from = hn::Ceil(hn::Min(hn::Max(hn::Sub(lo, hn::Set(d, o_max)), minus_one), top));
+            to = hn::Floor(hn::Min(hn::Max(hn::Sub(hi, hn::Set(d, o_min)), minus_one), top));
+            from = hn::Max(from, zero);
+            to = hn::Min(to, hn::Sub(top, hn::Set(d, 1)));
+            return hn::Le(from, to);
+        };
+        V i_lo, i_hi, j_lo, j_hi;
+        const V x_min = hn::Min(hn::Min(x[0], x[1]), x[2]), x_max = hn::Max(hn::Max(x[0], x[1]), x[2]);
+        const V y_min = hn::Min(hn::Min(y[0], y[1]), y[2]), y_max = hn::Max(hn::Max(y[0], y[1]), y[2]);
+        const auto on_x = range(x_min, x_max, g.sx_min, g.sx_max, g.width, i_lo, i_hi);
+        const auto on_y = range(y_min, y_max, g.sy_min, g.sy_max, g.height, j_lo, j_hi);
+        const V side = hn::Set(d, g.small_side);
+        const auto small_box = hn::And(hn::Lt(hn::Sub(i_hi, i_lo), side), hn::Lt(hn::Sub(j_hi, j_lo), side));
+        const auto decided = hn::And(finite, hn::Or(counter_clockwise, clockwise));
+        const auto culled = hn::AndNot(hn::And(on_x, on_y), decided);
+        const auto small = hn::And(hn::AndNot(culled, decided), small_box);
+        out.culled |= bits_of(culled, first);
+        out.small |= bits_of(small, first);
+        // Counter-clockwise: a clockwise triangle's corners 1 and 2 trade places.
+        const auto corner = [&](const V* c, int k) { return k == 0 ? c[0] : hn::IfThenElse(clockwise, c[3 - k], c[k]); };
+        // Only the small lanes are read; the others are zero, which converts.
+        const auto store_int = [&](V v, std::int32_t* to) {
+            hn::StoreU(hn::DemoteTo(di32, hn::IfThenElseZero(small, v)), di32, to + first);
+        };
+        for (int k = 0; k < 3; ++k) {
+            hn::StoreU(corner(x, k), d, out.x[k] + first);
+            hn::StoreU(corner(y, k), d, out.y[k] + first);
+            hn::StoreU(corner(z, k), d, out.z[k] + first);
+        }
+        store_int(i_lo, out.i_lo);
+        store_int(i_hi, out.i_hi);
+        store_int(j_lo, out.j_lo);
+        store_int(j_hi, out.j_hi);
+    }
+}
+
 }  // namespace rast::fast::detail::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -122,9 +194,14 @@ HWY_AFTER_NAMESPACE();
 namespace rast::fast::detail {
 
 HWY_EXPORT(PlaceSmallBatch);
+HWY_EXPORT(PlaceFloatBatch);
 
 void place_small_batch(const Triangle* t, int n, const PlaceGrid& grid, PlacedBatch& out) {
     HWY_DYNAMIC_DISPATCH(PlaceSmallBatch)(t, n, grid, out);
+}
+
+void place_float_batch(const Triangle* t, int n, const PlaceGrid& grid, FloatPlacedBatch& out) {
+    HWY_DYNAMIC_DISPATCH(PlaceFloatBatch)(t, n, grid, out);
 }
 
 }  // namespace rast::fast::detail

@@ -1,8 +1,10 @@
-// Placing small fixed-point triangles several at a time in SIMD (runtime dispatch, as kernels.h):
+// Placing small triangles several at a time in SIMD (runtime dispatch, as kernels.h). Fixed-point ones:
 // place_small_fixed (setup.h) one triangle at a time took a fifth of the instructions of a scene of
 // 4-pixel triangles, most of them in its branches and in moving coordinates between integer and
 // floating-point registers. Here every lane is a triangle and every step is exact: grid units, their
 // differences and the pixel ranges are integers below 2^31 held in doubles, scaled by powers of two.
+// The float modes' ones: place (setup.h) one at a time took a fifth of a float32 render of 4-pixel
+// triangles; in lanes, its steps are the same operations on the same doubles.
 #pragma once
 
 #include <rast/scene.h>
@@ -41,5 +43,20 @@ struct PlacedBatch {
 
 // Triangles t[0, n), 1 <= n <= kPlaceBatch, into lanes 0 to n - 1 (the lanes past n are in no mask).
 void place_small_batch(const Triangle* t, int n, const PlaceGrid& grid, PlacedBatch& out);
+
+// kPlaceBatch triangles of a float mode placed as place<Fault::none> (setup.h; no snapping there) places
+// them: a lane's bit in `small` where place finds it small (binning.h's is_small), with its corners
+// counter-clockwise and its pixel bounding box, or in `culled` where place finds it covers no sample. The
+// winding is the orientation filter's (rast/filters/orientation.h), evaluated as it is: the lanes it
+// leaves open, those with a coordinate that is not finite and those whose box is bigger are in neither
+// mask, for place itself. The grid is the pixel (PlaceGrid's scale and unit 1, offsets in pixels).
+struct FloatPlacedBatch {
+    double x[3][kPlaceBatch], y[3][kPlaceBatch], z[3][kPlaceBatch];
+    std::int32_t i_lo[kPlaceBatch], i_hi[kPlaceBatch], j_lo[kPlaceBatch], j_hi[kPlaceBatch];
+    std::uint32_t small, culled;
+};
+
+// Triangles t[0, n), 1 <= n <= kPlaceBatch, into lanes 0 to n - 1 (the lanes past n are in no mask).
+void place_float_batch(const Triangle* t, int n, const PlaceGrid& grid, FloatPlacedBatch& out);
 
 }  // namespace rast::fast::detail

@@ -9,12 +9,15 @@
 #include "binning.h"
 #include "targets.h"
 
+#include <rast/filters/orientation.h>
+
 #include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
 #include <string>
 #include <tuple>
@@ -175,6 +178,122 @@ TEST(PlaceBatch, EqualsPlaceSmallFixedOnEveryTarget) {
         // Every verdict is met often.
         for (const int count : verdicts)
             EXPECT_GT(count, 1000) << verdicts[0] << " " << verdicts[1] << " " << verdicts[2] << " " << verdicts[3];
+    });
+}
+
+// A triangle for the float modes' batch: tiny to 33 pixels across, with corners on pixel centres and
+// sample rows (the pixel range's ties), just off the viewport, near-collinear (the orientation filter left
+// open), of zero area, 10^300 across, subnormal, or not finite.
+Triangle random_float_triangle(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> where(-40, 1064), depth(-1, 1);
+    std::uniform_int_distribution<int> shape(0, 11);
+    const double cx = where(rng), cy = where(rng);
+    const auto near = [&](double reach) {
+        std::uniform_real_distribution<double> offset(-reach, reach);
+        const auto coordinate = [&](double centre) {
+            const double v = centre + offset(rng);
+            switch (shape(rng)) {
+                case 0: return std::round(v) + 0.5;   // a pixel centre
+                case 1: return std::round(v) + 0.375;  // a row or column of the 4- and 8-sample patterns
+                case 2: return std::round(v);
+                default: return v;
+            }
+        };
+        return Vertex{coordinate(cx), coordinate(cy), depth(rng)};
+    };
+    Triangle t;
+    switch (shape(rng)) {
+        case 0:  // near-collinear: the third corner a few units in the last place off the others' line
+            t.v[0] = near(12);
+            t.v[1] = near(12);
+            t.v[2] = {(t.v[0].x + t.v[1].x) / 2, std::nextafter((t.v[0].y + t.v[1].y) / 2, shape(rng) < 6 ? 1e9 : -1e9),
+                      0.5};
+            break;
+        case 1:  // zero area
+            t.v[0] = near(8);
+            t.v[1] = near(8);
+            t.v[2] = t.v[shape(rng) % 2];
+            break;
+        case 2:  // boxes about 32 pixels across, either side of the small lane's limit
+            for (Vertex& v : t.v) v = near(16.5);
+            break;
+        case 3: {  // not finite
+            for (Vertex& v : t.v) v = near(4);
+            const double bad[] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity()};
+            *(&t.v[shape(rng) % 3].x + shape(rng) % 3) = bad[shape(rng) % 3];
+            break;
+        }
+        case 4:  // far apart: products that overflow
+            for (Vertex& v : t.v) v = {std::ldexp(depth(rng), 1000), std::ldexp(depth(rng), 1000), depth(rng)};
+            break;
+        case 5:  // products in the subnormal range, below the filter's absolute term
+            for (Vertex& v : t.v) v = {std::ldexp(depth(rng), -530), std::ldexp(depth(rng), -530), depth(rng)};
+            break;
+        default:  // tiny to small
+            for (Vertex& v : t.v) v = near(shape(rng) < 8 ? 3 : 12);
+            break;
+    }
+    return t;
+}
+
+// place_float_batch against place<Fault::none>, lane by lane on every SIMD target: a small lane is the
+// triangle place finds small, with its corners and box; a culled one, one place finds covers nothing; and
+// a lane in neither is one place must settle: a coordinate not finite, a winding the filter leaves open,
+// or a box too big.
+TEST(PlaceBatch, FloatEqualsPlaceOnEveryTarget) {
+    on_every_target([&] {
+        std::mt19937_64 rng(20261129);
+        int verdicts[3] = {}, open_windings = 0;  // small, culled, left to place
+        for (const Precision precision : {Precision::float32, Precision::float64})
+            for (const int samples : {1, 4, 8, 16}) {
+                const Context c = make_context<Fault::none>({1024, 1024}, samples, precision);
+                const PlaceGrid grid = float_place_grid(c);
+                for (int trial = 0; trial < 3000; ++trial) {
+                    std::vector<Triangle> batch(1 + trial % kPlaceBatch);
+                    for (Triangle& t : batch) t = random_float_triangle(rng);
+                    const int n = static_cast<int>(batch.size());
+                    FloatPlacedBatch got;
+                    place_float_batch(batch.data(), n, grid, got);
+                    EXPECT_EQ(got.small & got.culled, 0u);
+                    EXPECT_EQ((got.small | got.culled) >> n, 0u);
+                    for (int k = 0; k < n; ++k) {
+                        const std::uint32_t bit = 1u << k;
+                        const std::string what = "trial " + std::to_string(trial) + " lane " + std::to_string(k);
+                        const Triangle& t = batch[k];
+                        if (!is_finite(t)) {
+                            EXPECT_EQ((got.small | got.culled) & bit, 0u) << what;
+                            ++verdicts[2];
+                            continue;
+                        }
+                        const std::optional<Placed> want = place<Fault::none>(t, c);
+                        const bool open = filters::orientation(t.v[0].x, t.v[0].y, t.v[1].x, t.v[1].y, t.v[2].x,
+                                                               t.v[2].y).certain_sign() == 0;
+                        EXPECT_EQ((got.culled & bit) != 0, !want && !open) << what;
+                        EXPECT_EQ((got.small & bit) != 0, want && !open && is_small(*want)) << what;
+                        ++verdicts[got.small & bit ? 0 : got.culled & bit ? 1 : 2];
+                        open_windings += open;
+                        if (got.small & bit) {
+                            for (int corner = 0; corner < 3; ++corner) {
+                                EXPECT_EQ(std::bit_cast<std::uint64_t>(got.x[corner][k]),
+                                          std::bit_cast<std::uint64_t>(want->v[corner].x)) << what;
+                                EXPECT_EQ(std::bit_cast<std::uint64_t>(got.y[corner][k]),
+                                          std::bit_cast<std::uint64_t>(want->v[corner].y)) << what;
+                                EXPECT_EQ(std::bit_cast<std::uint64_t>(got.z[corner][k]),
+                                          std::bit_cast<std::uint64_t>(want->v[corner].z)) << what;
+                            }
+                            EXPECT_EQ(got.i_lo[k], want->i_lo) << what;
+                            EXPECT_EQ(got.i_hi[k], want->i_hi) << what;
+                            EXPECT_EQ(got.j_lo[k], want->j_lo) << what;
+                            EXPECT_EQ(got.j_hi[k], want->j_hi) << what;
+                        }
+                        if (HasFailure()) return;
+                    }
+                }
+            }
+        // Every verdict is met often.
+        for (const int count : verdicts) EXPECT_GT(count, 1000) << verdicts[0] << " " << verdicts[1] << " " << verdicts[2];
+        EXPECT_GT(open_windings, 300);
     });
 }
 
