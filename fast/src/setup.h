@@ -394,10 +394,34 @@ inline Placed placed_of(const SmallFixed& s, const Context& c) {
     return p;
 }
 
+// The depth planes of n placed triangles (1 to kPlaneBatch), placed(k) the k-th (a Placed or a reference
+// to one): make_plane's, set up together (make_planes).
+template <class PlacedOf>
+void placed_planes(std::size_t n, PlacedOf placed, const Context& c, Plane* planes) {
+    CornerBatch batch;
+    for (std::size_t k = 0; k < kPlaneBatch; ++k) {
+        const Placed& s = placed(k < n ? k : 0);  // lanes past the run repeat its first
+        for (int corner = 0; corner < 3; ++corner) {
+            batch.x[corner][k] = s.v[corner].x;
+            batch.y[corner][k] = s.v[corner].y;
+            batch.z[corner][k] = s.v[corner].z;
+        }
+        batch.i_lo[k] = s.i_lo;
+        batch.i_hi[k] = s.i_hi;
+        batch.j_lo[k] = s.j_lo;
+        batch.j_hi[k] = s.j_hi;
+    }
+    make_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
+    for (std::size_t k = 0; k < n; ++k) {
+        const Vertex v0 = placed(k).v[0];
+        planes[k] = Plane{v0.x, v0.y, v0.z, batch.a[k], batch.b[k], batch.err[k]};
+    }
+}
+
 // The depth planes of a run of 1 to kPlaneBatch small triangles, and which of them are narrow
-// (narrow_edges; bit k for run[k]): the narrow ones' set up together (narrow_planes), the others' by
-// make_plane. Where any is narrow, `batch` holds the run's corners and boxes (lanes past the run repeat
-// its first triangle).
+// (narrow_edges; bit k for run[k]): the narrow ones' set up together (narrow_planes), the others',
+// make_plane's, together too (placed_planes). Where any is narrow, `batch` holds the run's corners and
+// boxes (lanes past the run repeat its first triangle).
 inline std::uint32_t small_planes(std::span<const SmallFixed> run, const Context& c, Plane* planes,
                                   PlaneBatch& batch) {
     std::uint32_t narrow = 0;
@@ -418,36 +442,15 @@ inline std::uint32_t small_planes(std::span<const SmallFixed> run, const Context
         }
         narrow_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
     }
+    const std::uint32_t all = (std::uint32_t{1} << run.size()) - 1;
+    if (narrow != all)  // the others' planes, make_plane's, in lanes too (fixed16's small triangles are seldom narrow)
+        placed_planes(run.size(), [&](std::size_t k) { return placed_of(run[k], c); }, c, planes);
     for (std::size_t k = 0; k < run.size(); ++k) {
         const SmallFixed& t = run[k];
-        planes[k] = narrow >> k & 1 ? Plane{t.x[0] * c.unit, t.y[0] * c.unit, t.z[0], batch.a[k], batch.b[k], batch.err[k]}
-                                    : make_plane(placed_of(t, c), c);
+        if (narrow >> k & 1)
+            planes[k] = Plane{t.x[0] * c.unit, t.y[0] * c.unit, t.z[0], batch.a[k], batch.b[k], batch.err[k]};
     }
     return narrow;
-}
-
-// The depth planes of n placed triangles (1 to kPlaneBatch), placed(k) the k-th: make_plane's, set up
-// together (make_planes).
-template <class PlacedOf>
-void placed_planes(std::size_t n, PlacedOf placed, const Context& c, Plane* planes) {
-    CornerBatch batch;
-    for (std::size_t k = 0; k < kPlaneBatch; ++k) {
-        const Placed& s = placed(k < n ? k : 0);  // lanes past the run repeat its first
-        for (int corner = 0; corner < 3; ++corner) {
-            batch.x[corner][k] = s.v[corner].x;
-            batch.y[corner][k] = s.v[corner].y;
-            batch.z[corner][k] = s.v[corner].z;
-        }
-        batch.i_lo[k] = s.i_lo;
-        batch.i_hi[k] = s.i_hi;
-        batch.j_lo[k] = s.j_lo;
-        batch.j_hi[k] = s.j_hi;
-    }
-    make_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
-    for (std::size_t k = 0; k < n; ++k) {
-        const Vertex& v0 = placed(k).v[0];
-        planes[k] = Plane{v0.x, v0.y, v0.z, batch.a[k], batch.b[k], batch.err[k]};
-    }
 }
 
 // The float modes' tile margin: the mode's edge error bound plus that of the double evaluation the tile
