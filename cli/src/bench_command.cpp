@@ -26,7 +26,7 @@ namespace {
 // The bunny: installed beside the program (data_paths.h), else the source tree's, for a build that is run
 // where it was built.
 std::string default_mesh() {
-    if (auto installed = installed_data("bunny.off")) return installed->string();
+    if (auto installed = installed_data("bunny.off", DataKind::file)) return installed->string();
     return RAST_DEFAULT_MESH;
 }
 

@@ -7,8 +7,12 @@
 
 namespace rast::cli {
 
-// PREFIX/share/rast/NAME for the program installed as PREFIX/bin/rast, where that exists.
-std::optional<std::filesystem::path> installed_data(std::string_view name);
+// What installed_data looks for.
+enum class DataKind { file, folder };
+
+// PREFIX/DATADIR/rast/NAME for the program installed as PREFIX/BINDIR/rast (the install's own BINDIR and
+// DATADIR: bin and share by default), where it exists and is a file or a folder as `kind` says.
+std::optional<std::filesystem::path> installed_data(std::string_view name, DataKind kind);
 
 // The corpus a command takes when none is named: corpus/ in the working directory, else the one installed
 // beside the program, else the source tree's that the program was built from (a build run in its build

@@ -166,7 +166,7 @@ TEST_F(PluginCommands, ConformCatchesTheTutorialRasterizerAndKeepsReplayableCase
 
 // Run from a folder with no corpus/, a build run in its build tree takes the corpus of its source tree (an
 // installed one, the installed corpus): conform's battery and replay's cases are not left empty.
-TEST_F(PluginCommands, AWayFromTheSourceTreeTheCorpusIsStillFound) {
+TEST_F(PluginCommands, AwayFromTheSourceTreeTheCorpusIsStillFound) {
     const std::string here = "cd " + shell_word(dir.string()) + " && " + RAST_BINARY + " ";
     Result r = run(here + "conform " + kNaive + " --cases 1 --found " + out("found") + " 2>&1");
     EXPECT_EQ(r.status, 1) << r.out;
