@@ -59,13 +59,15 @@ inline Bounded mul(Bounded x, Bounded y, double w = 1) {
     return {v, std::abs(x.v) * y.e + std::abs(y.v) * x.e + x.e * y.e + w * (kUnitDouble * std::abs(v) + DBL_TRUE_MIN)};
 }
 
-// |X/Y - x/y| <= (ex + |x/y| ey) / (|y| - ey) when |Y - y| <= ey < |y|; unbounded otherwise. |v| stands
-// for |x/y|, which it may fall short of by u |v|: a relative u of that term, in kSlack. (It was multiplied
-// by 1 + u, which is 1 in double.)
+// |X/Y - x/y| <= (ex + |x/y| ey) / (|y| - ey) when |Y - y| <= ey < |y|; unbounded otherwise. v is x/y
+// rounded: |x/y| <= |v| + u |v| + 2^-1075, taken as |v| + 2^-1074, whose absolute part matters where the
+// quotient underflows (a tiny numerator over a denominator known only within most of itself: 2^-1074 / 3
+// rounds to 0, yet divided by 3 - 2.9 it is ten times the least subnormal); the relative u is in kSlack.
 inline Bounded div(Bounded x, Bounded y, double w = 1) {
     const double v = x.v / y.v;
     if (!(std::abs(y.v) > y.e)) return {v, std::numeric_limits<double>::infinity()};
-    return {v, (x.e + std::abs(v) * y.e) / (std::abs(y.v) - y.e) + w * (kUnitDouble * std::abs(v) + DBL_TRUE_MIN)};
+    return {v, (x.e + (std::abs(v) + DBL_TRUE_MIN) * y.e) / (std::abs(y.v) - y.e) +
+                   w * (kUnitDouble * std::abs(v) + DBL_TRUE_MIN)};
 }
 
 }  // namespace rast::fast::detail

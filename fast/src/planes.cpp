@@ -102,7 +102,8 @@ HWY_INLINE BoundedLanes MulLanes(BoundedLanes x, BoundedLanes y) {
 HWY_INLINE BoundedLanes DivLanes(BoundedLanes x, BoundedLanes y) {
     const D d;
     const V v = hn::Div(x.v, y.v);
-    const V e = hn::Add(hn::Div(hn::Add(x.e, hn::Mul(hn::Abs(v), y.e)), hn::Sub(hn::Abs(y.v), y.e)), RoundingLanes(v));
+    const V reach = hn::Mul(hn::Add(hn::Abs(v), hn::Set(d, DBL_TRUE_MIN)), y.e);
+    const V e = hn::Add(hn::Div(hn::Add(x.e, reach), hn::Sub(hn::Abs(y.v), y.e)), RoundingLanes(v));
     return {v, hn::IfThenElse(hn::Gt(hn::Abs(y.v), y.e), e, hn::Set(d, std::numeric_limits<double>::infinity()))};
 }
 

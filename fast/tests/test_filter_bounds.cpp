@@ -39,6 +39,19 @@ using testing::on_every_target;
 
 // --- The depth plane ------------------------------------------------------------------------------
 
+// bounded.h's div where the quotient underflows: 2^-1074 / 3 rounds to 0, but over a denominator known
+// only within 2.9 of 3 the exact quotient reaches 2^-1074 / 0.1 (the double 2.9 a little below 2.9). A
+// bound that took |x/y| as |v| alone gave 2^-1074.
+TEST(DivBound, CoversAQuotientThatUnderflows) {
+    const Bounded x = exact(DBL_TRUE_MIN), y{3, 2.9};
+    const Bounded q = div(x, y);
+    ASSERT_EQ(q.v, 0.0);
+    // The denominators at the ends of y's interval, exactly.
+    for (const Rational denominator : {Rational(3) - Rational(2.9), Rational(3) + Rational(2.9)})
+        EXPECT_LE(abs(Rational(DBL_TRUE_MIN) / denominator - Rational(q.v)), Rational(q.e));
+}
+
+
 // A triangle on the fixed8 grid whose depths the climb moves: its corners stay put, so that the
 // bounding box, and the samples where the bound's reach is attained, do too.
 struct PlaneCase {
