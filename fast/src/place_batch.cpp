@@ -33,30 +33,55 @@ std::uint32_t bits_of(Mask m, int first) {
     return bits << first;
 }
 
+// Corner k of the triangles t[first, first + count) in lanes: x[k], y[k], z[k]. The lanes past the count
+// read the last triangle again.
+HWY_INLINE void GatherCorners(const Triangle* t, int first, int count, V* x, V* y, V* z) {
+    const D d;
+    const DI di;
+    const auto lane = hn::Min(hn::Iota(di, 0), hn::Set(di, count - 1));
+    const auto index = hn::Add(hn::ShiftLeft<3>(lane), lane);  // 9 doubles a triangle
+    const double* base = &t[first].v[0].x;
+    for (int k = 0; k < 3; ++k) {
+        x[k] = hn::GatherIndex(d, base + 3 * k, index);
+        y[k] = hn::GatherIndex(d, base + 3 * k + 1, index);
+        z[k] = hn::GatherIndex(d, base + 3 * k + 2, index);
+    }
+}
+
+HWY_INLINE V MinOf(const V* c) { return hn::Min(hn::Min(c[0], c[1]), c[2]); }
+HWY_INLINE V MaxOf(const V* c) { return hn::Max(hn::Max(c[0], c[1]), c[2]); }
+
+// Corner k counter-clockwise: a clockwise triangle's corners 1 and 2 trade places.
+template <class Mask>
+HWY_INLINE V CounterClockwise(const V* c, int k, Mask clockwise) {
+    return k == 0 ? c[0] : hn::IfThenElse(clockwise, c[3 - k], c[k]);
+}
+
+// The lanes `small` of v, whole numbers below 2^31, as int32 at to[first, ...): the other lanes are stored
+// as zero, which converts.
+template <class Mask>
+HWY_INLINE void StoreSmallInts(V v, Mask small, std::int32_t* to, int first) {
+    const DI32 di32;
+    hn::StoreU(hn::DemoteTo(di32, hn::IfThenElseZero(small, v)), di32, to + first);
+}
+
 // place_small_fixed's steps, in its terms (setup.h), for every lane at once.
 void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& out) {
     const D d;
-    const DI di;
-    const DI32 di32;
     const int lanes = static_cast<int>(hn::Lanes(d));
     out.small = out.culled = out.general = out.undecided = out.narrow = 0;
     const V scale = hn::Set(d, g.scale), unit = hn::Set(d, g.unit), limit = hn::Set(d, g.limit);
     const V round = hn::Set(d, 0x1.8p52), minus_one = hn::Set(d, -1), zero = hn::Zero(d);
     for (int first = 0; first < n; first += lanes) {
-        const int count = std::min(lanes, n - first);
-        // Lanes past the batch read its last triangle again, and are in no mask.
-        const auto lane = hn::Min(hn::Iota(di, 0), hn::Set(di, count - 1));
-        const auto index = hn::Add(hn::ShiftLeft<3>(lane), lane);  // 9 doubles a triangle
-        const double* base = &t[first].v[0].x;
+        const int count = std::min(lanes, n - first);  // the lanes past it are in no mask
         V x[3], y[3], z[3];
+        GatherCorners(t, first, count, x, y, z);
         auto in_range = hn::FirstN(d, static_cast<std::size_t>(count));
         for (int k = 0; k < 3; ++k) {
-            const V px = hn::GatherIndex(d, base + 3 * k, index), py = hn::GatherIndex(d, base + 3 * k + 1, index);
-            z[k] = hn::GatherIndex(d, base + 3 * k + 2, index);
             // Within the range (false for NaN); grid_units (snap.h): the sum rounds to an integer.
-            in_range = hn::And(in_range, hn::And(hn::Le(hn::Abs(px), limit), hn::Le(hn::Abs(py), limit)));
-            x[k] = hn::Sub(hn::Add(hn::Mul(px, scale), round), round);
-            y[k] = hn::Sub(hn::Add(hn::Mul(py, scale), round), round);
+            in_range = hn::And(in_range, hn::And(hn::Le(hn::Abs(x[k]), limit), hn::Le(hn::Abs(y[k]), limit)));
+            x[k] = hn::Sub(hn::Add(hn::Mul(x[k], scale), round), round);
+            y[k] = hn::Sub(hn::Add(hn::Mul(y[k], scale), round), round);
         }
         // The cross product: its products exact below 2^53, and then their difference's sign and zero too.
         const V dx1 = hn::Sub(x[1], x[0]), dy1 = hn::Sub(y[1], y[0]);
@@ -74,8 +99,7 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
             return hn::Le(from, to);
         };
         V i_lo, i_hi, j_lo, j_hi;
-        const V x_min = hn::Min(hn::Min(x[0], x[1]), x[2]), x_max = hn::Max(hn::Max(x[0], x[1]), x[2]);
-        const V y_min = hn::Min(hn::Min(y[0], y[1]), y[2]), y_max = hn::Max(hn::Max(y[0], y[1]), y[2]);
+        const V x_min = MinOf(x), x_max = MaxOf(x), y_min = MinOf(y), y_max = MaxOf(y);
         const auto on_x = range(x_min, x_max, g.sx_min, g.sx_max, g.width, i_lo, i_hi);
         const auto on_y = range(y_min, y_max, g.sy_min, g.sy_max, g.height, j_lo, j_hi);
         // narrow_edges: 2 w (w + scale) + 1 < 2^31, w the larger extent; exact below 2^53, and a rounded
@@ -98,47 +122,32 @@ void PlaceSmallBatch(const Triangle* t, int n, const PlaceGrid& g, PlacedBatch& 
         out.general |= bits_of(hn::AndNot(small, hn::AndNot(culled, decided)), first);
         out.small |= bits_of(small, first);
         out.narrow |= bits_of(hn::And(small, narrow), first);
-        // Counter-clockwise: a clockwise triangle's corners 1 and 2 trade places.
         const auto clockwise = hn::Lt(cross, zero);
-        const auto corner = [&](const V* c, int k) { return k == 0 ? c[0] : hn::IfThenElse(clockwise, c[3 - k], c[k]); };
-        // Only the small lanes are read; the others are zero, which converts.
-        const auto store_int = [&](V v, std::int32_t* to) {
-            hn::StoreU(hn::DemoteTo(di32, hn::IfThenElseZero(small, v)), di32, to + first);
-        };
-        for (int k = 0; k < 3; ++k) {
-            store_int(corner(x, k), out.x[k]);
-            store_int(corner(y, k), out.y[k]);
-            hn::StoreU(corner(z, k), d, out.z[k] + first);
+        for (int k = 0; k < 3; ++k) {  // only the small lanes are read
+            StoreSmallInts(CounterClockwise(x, k, clockwise), small, out.x[k], first);
+            StoreSmallInts(CounterClockwise(y, k, clockwise), small, out.y[k], first);
+            hn::StoreU(CounterClockwise(z, k, clockwise), d, out.z[k] + first);
         }
-        store_int(i_lo, out.i_lo);
-        store_int(i_hi, out.i_hi);
-        store_int(j_lo, out.j_lo);
-        store_int(j_hi, out.j_hi);
+        StoreSmallInts(i_lo, small, out.i_lo, first);
+        StoreSmallInts(i_hi, small, out.i_hi, first);
+        StoreSmallInts(j_lo, small, out.j_lo, first);
+        StoreSmallInts(j_hi, small, out.j_hi, first);
     }
 }
 
 // place<Fault::none>'s steps for the float modes (setup.h), for every lane at once.
 void PlaceFloatBatch(const Triangle* t, int n, const PlaceGrid& g, FloatPlacedBatch& out) {
     const D d;
-    const DI di;
-    const DI32 di32;
     const int lanes = static_cast<int>(hn::Lanes(d));
     out.small = out.culled = 0;
     const V minus_one = hn::Set(d, -1), zero = hn::Zero(d);
     for (int first = 0; first < n; first += lanes) {
-        const int count = std::min(lanes, n - first);
-        // Lanes past the batch read its last triangle again, and are in no mask.
-        const auto lane = hn::Min(hn::Iota(di, 0), hn::Set(di, count - 1));
-        const auto index = hn::Add(hn::ShiftLeft<3>(lane), lane);  // 9 doubles a triangle
-        const double* base = &t[first].v[0].x;
+        const int count = std::min(lanes, n - first);  // the lanes past it are in no mask
         V x[3], y[3], z[3];
+        GatherCorners(t, first, count, x, y, z);
         auto finite = hn::FirstN(d, static_cast<std::size_t>(count));
-        for (int k = 0; k < 3; ++k) {
-            x[k] = hn::GatherIndex(d, base + 3 * k, index);
-            y[k] = hn::GatherIndex(d, base + 3 * k + 1, index);
-            z[k] = hn::GatherIndex(d, base + 3 * k + 2, index);
+        for (int k = 0; k < 3; ++k)
             finite = hn::And(finite, hn::And(hn::IsFinite(x[k]), hn::And(hn::IsFinite(y[k]), hn::IsFinite(z[k]))));
-        }
         // filters::orientation(p = corner 0, q = corner 1, r = corner 2) with its Sound weights (1), as written
         // there, and its certain_sign: the lanes it leaves open (0) go to place's exact orientation.
         const V left = hn::Mul(hn::Sub(x[1], x[0]), hn::Sub(y[2], y[0]));
@@ -158,10 +167,8 @@ void PlaceFloatBatch(const Triangle* t, int n, const PlaceGrid& g, FloatPlacedBa
             return hn::Le(from, to);
         };
         V i_lo, i_hi, j_lo, j_hi;
-        const V x_min = hn::Min(hn::Min(x[0], x[1]), x[2]), x_max = hn::Max(hn::Max(x[0], x[1]), x[2]);
-        const V y_min = hn::Min(hn::Min(y[0], y[1]), y[2]), y_max = hn::Max(hn::Max(y[0], y[1]), y[2]);
-        const auto on_x = range(x_min, x_max, g.sx_min, g.sx_max, g.width, i_lo, i_hi);
-        const auto on_y = range(y_min, y_max, g.sy_min, g.sy_max, g.height, j_lo, j_hi);
+        const auto on_x = range(MinOf(x), MaxOf(x), g.sx_min, g.sx_max, g.width, i_lo, i_hi);
+        const auto on_y = range(MinOf(y), MaxOf(y), g.sy_min, g.sy_max, g.height, j_lo, j_hi);
         const V side = hn::Set(d, g.small_side);
         const auto small_box = hn::And(hn::Lt(hn::Sub(i_hi, i_lo), side), hn::Lt(hn::Sub(j_hi, j_lo), side));
         const auto decided = hn::And(finite, hn::Or(counter_clockwise, clockwise));
@@ -169,21 +176,15 @@ void PlaceFloatBatch(const Triangle* t, int n, const PlaceGrid& g, FloatPlacedBa
         const auto small = hn::And(hn::AndNot(culled, decided), small_box);
         out.culled |= bits_of(culled, first);
         out.small |= bits_of(small, first);
-        // Counter-clockwise: a clockwise triangle's corners 1 and 2 trade places.
-        const auto corner = [&](const V* c, int k) { return k == 0 ? c[0] : hn::IfThenElse(clockwise, c[3 - k], c[k]); };
-        // Only the small lanes are read; the others are zero, which converts.
-        const auto store_int = [&](V v, std::int32_t* to) {
-            hn::StoreU(hn::DemoteTo(di32, hn::IfThenElseZero(small, v)), di32, to + first);
-        };
-        for (int k = 0; k < 3; ++k) {
-            hn::StoreU(corner(x, k), d, out.x[k] + first);
-            hn::StoreU(corner(y, k), d, out.y[k] + first);
-            hn::StoreU(corner(z, k), d, out.z[k] + first);
+        for (int k = 0; k < 3; ++k) {  // only the small lanes are read
+            hn::StoreU(CounterClockwise(x, k, clockwise), d, out.x[k] + first);
+            hn::StoreU(CounterClockwise(y, k, clockwise), d, out.y[k] + first);
+            hn::StoreU(CounterClockwise(z, k, clockwise), d, out.z[k] + first);
         }
-        store_int(i_lo, out.i_lo);
-        store_int(i_hi, out.i_hi);
-        store_int(j_lo, out.j_lo);
-        store_int(j_hi, out.j_hi);
+        StoreSmallInts(i_lo, small, out.i_lo, first);
+        StoreSmallInts(i_hi, small, out.i_hi, first);
+        StoreSmallInts(j_lo, small, out.j_lo, first);
+        StoreSmallInts(j_hi, small, out.j_hi, first);
     }
 }
 
