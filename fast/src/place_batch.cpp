@@ -152,8 +152,9 @@ void PlaceFloatBatch(const Triangle* t, int n, const PlaceGrid& g, FloatPlacedBa
         // there, and its certain_sign: the lanes it leaves open (0) go to place's exact orientation.
         const V left = hn::Mul(hn::Sub(x[1], x[0]), hn::Sub(y[2], y[0]));
         const V right = hn::Mul(hn::Sub(y[1], y[0]), hn::Sub(x[2], x[0]));
-        const V bound = hn::Add(hn::Mul(hn::Set(d, filters::kOrientationRelative), hn::Add(hn::Abs(left), hn::Abs(right))),
-                                hn::Set(d, filters::kOrientationUnderflow));
+        const V bound =
+            hn::Add(hn::Mul(hn::Set(d, filters::kOrientationRelative), hn::Add(hn::Abs(left), hn::Abs(right))),
+                    hn::Set(d, filters::kOrientationUnderflow));
         const V det = hn::Sub(left, right);
         const auto counter_clockwise = hn::Gt(det, bound), clockwise = hn::Lt(det, hn::Neg(bound));
         // pixel_range: clamped to [-1, size], where ceil and floor are its truncations corrected by one;

@@ -1,10 +1,10 @@
-// The depth planes of small triangles, several at a time in SIMD with runtime dispatch (as kernels.h):
-// one at a time, setting up a small triangle's plane took a sixth of the instructions of a scene of
-// 4-pixel triangles (fixed8 and float32 alike). Every lane computes the same operations in the same order, without contraction, so
-// a plane does not depend on the instruction set.
+// The depth planes of small triangles, several at a time in SIMD with runtime dispatch (as kernels.h): one
+// at a time, setting up a small triangle's plane took a sixth of the instructions of a scene of 4-pixel
+// triangles (fixed8 and float32 alike). Every lane computes the same operations in the same order, without
+// contraction, so a plane does not depend on the instruction set.
 //
-// The triangles are narrow (narrow_edges, setup.h): on the fixed grid, their corners within 2^15 grid
-// units of each other. Their differences, and the cross product of two (integers below 2^31 times a
+// narrow_planes' triangles are narrow (narrow_edges, setup.h): on the fixed grid, their corners within 2^15
+// grid units of each other. Their differences, and the cross product of two (integers below 2^31 times a
 // power of two), are exact in double, so make_plane's operations give the same gradient, and its
 // bounds, which are mul, sub and div's (bounded.h) with those inputs' errors zero, come from the depths
 // alone: the plane costs a third fewer operations than make_plane's.

@@ -1,10 +1,10 @@
 // bin_chunk (binning.h) as the library runs it, placing eight triangles at a time (place_batch.h), against
 // the same function placing one at a time, as the faulty twins do (Fault::float_row_accumulation changes
 // nothing in binning), in the fixed and the float modes: the same records in the same bins in the same
-// order, and the same first bad triangle. The scenes mix tiny, small and big triangles with far-reaching ones whose box is clipped
-// small (the batch leaves them undecided, and place_small_fixed finds many of them small), on viewports
-// down to one tile and below the small lane's 32 pixels, with a depth or coordinate that is not finite at
-// a random place in some.
+// order, and the same first bad triangle. The scenes mix tiny, small and big triangles with far-reaching
+// ones whose box is clipped small (the batch leaves them undecided, and place_small_fixed finds many of
+// them small), on viewports down to one tile and below the small lane's 32 pixels, with a depth or
+// coordinate that is not finite at a random place in some.
 #include "binning.h"
 #include "targets.h"
 

@@ -292,7 +292,8 @@ TEST(PlaceBatch, FloatEqualsPlaceOnEveryTarget) {
                 }
             }
         // Every verdict is met often.
-        for (const int count : verdicts) EXPECT_GT(count, 1000) << verdicts[0] << " " << verdicts[1] << " " << verdicts[2];
+        for (const int count : verdicts)
+            EXPECT_GT(count, 1000) << verdicts[0] << " " << verdicts[1] << " " << verdicts[2];
         EXPECT_GT(open_windings, 300);
     });
 }
