@@ -394,8 +394,11 @@ inline Placed placed_of(const SmallFixed& s, const Context& c) {
     return p;
 }
 
-// The depth planes of n placed triangles (1 to kPlaneBatch), placed(k) the k-th (a Placed or a reference
-// to one): make_plane's, set up together (make_planes).
+// What the SIMD planes need of the context (planes.h).
+inline PlaneGrid plane_grid(const Context& c) { return {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max}; }
+
+// The depth planes of n placed triangles (1 to kPlaneBatch), placed(k) a reference to the k-th:
+// make_plane's, set up together (make_planes).
 template <class PlacedOf>
 void placed_planes(std::size_t n, PlacedOf placed, const Context& c, Plane* planes) {
     CornerBatch batch;
@@ -411,9 +414,9 @@ void placed_planes(std::size_t n, PlacedOf placed, const Context& c, Plane* plan
         batch.j_lo[k] = s.j_lo;
         batch.j_hi[k] = s.j_hi;
     }
-    make_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
+    make_planes(batch, plane_grid(c));
     for (std::size_t k = 0; k < n; ++k) {
-        const Vertex v0 = placed(k).v[0];
+        const Vertex& v0 = placed(k).v[0];
         planes[k] = Plane{v0.x, v0.y, v0.z, batch.a[k], batch.b[k], batch.err[k]};
     }
 }
@@ -440,11 +443,14 @@ inline std::uint32_t small_planes(std::span<const SmallFixed> run, const Context
             batch.j_lo[k] = t.j_lo;
             batch.j_hi[k] = t.j_hi;
         }
-        narrow_planes(batch, {c.unit, c.ox_min, c.ox_max, c.oy_min, c.oy_max});
+        narrow_planes(batch, plane_grid(c));
     }
     const std::uint32_t all = (std::uint32_t{1} << run.size()) - 1;
-    if (narrow != all)  // the others' planes, make_plane's, in lanes too (fixed16's small triangles are seldom narrow)
-        placed_planes(run.size(), [&](std::size_t k) { return placed_of(run[k], c); }, c, planes);
+    if (narrow != all) {  // the others' planes, make_plane's, in lanes too (fixed16's are seldom narrow)
+        Placed placed[kPlaneBatch];
+        for (std::size_t k = 0; k < run.size(); ++k) placed[k] = placed_of(run[k], c);
+        placed_planes(run.size(), [&](std::size_t k) -> const Placed& { return placed[k]; }, c, planes);
+    }
     for (std::size_t k = 0; k < run.size(); ++k) {
         const SmallFixed& t = run[k];
         if (narrow >> k & 1)
