@@ -47,7 +47,7 @@ TEST(DivBound, CoversAQuotientThatUnderflows) {
     const Bounded q = div(x, y);
     ASSERT_EQ(q.v, 0.0);
     // The denominators at the ends of y's interval, exactly.
-    for (const Rational denominator : {Rational(3) - Rational(2.9), Rational(3) + Rational(2.9)})
+    for (const Rational& denominator : {Rational(3) - Rational(2.9), Rational(3) + Rational(2.9)})
         EXPECT_LE(abs(Rational(DBL_TRUE_MIN) / denominator - Rational(q.v)), Rational(q.e));
 }
 
